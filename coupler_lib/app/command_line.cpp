@@ -1,0 +1,51 @@
+#include "coupler_lib/app/command_line.hpp"
+
+#include <stdexcept>
+
+namespace lbdem {
+
+CommandLine parse_command_line(const std::vector<std::string>& args) {
+  CommandLine c;
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto value = [&](const char* opt) {
+      if (i + 1 >= args.size()) throw std::invalid_argument(std::string(opt) + " needs a value");
+      return args[++i];
+    };
+    if (a == "--help" || a == "-h")
+      c.help = true;
+    else if (a == "--version")
+      c.version = true;
+    else if (a == "--check")
+      c.check = true;
+    else if (a == "--replay")
+      c.replay = value("--replay");
+    else if (a == "--log-level")
+      c.log_level = value("--log-level");
+    else if (!a.empty() && a[0] == '-')
+      throw std::invalid_argument("unknown option '" + a + "'");
+    else if (c.scene.empty())
+      c.scene = a;
+    else
+      throw std::invalid_argument("more than one scene file given ('" + c.scene + "', '" + a +
+                                  "')");
+  }
+  if (!c.help && !c.version && c.scene.empty()) throw std::invalid_argument("no scene file given");
+  if (!c.log_level.empty() && c.log_level != "trace" && c.log_level != "debug" &&
+      c.log_level != "info" && c.log_level != "warn" && c.log_level != "error")
+    throw std::invalid_argument("--log-level expects trace, debug, info, warn or error");
+  return c;
+}
+
+std::string usage(const std::string& app, const std::string& what) {
+  return "usage: " + app + " [options] scene.yaml\n" + what +
+         "\n\noptions:\n"
+         "  --check           validate the scene, print the derived parameters, do not run\n"
+         "  --replay FILE     run this side alone, fed from a recording (HDF5)\n"
+         "  --log-level L     trace | debug | info | warn | error (overrides the scene)\n"
+         "  --version         print the version\n"
+         "  --help            this text\n"
+         "\ncoupled launch:  mpirun -np A fluid_app scene.yaml : -np B dem_app scene.yaml\n";
+}
+
+}  // namespace lbdem

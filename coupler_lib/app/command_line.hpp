@@ -1,0 +1,23 @@
+#pragma once
+// The command line both binaries share:
+//   APP [--check] [--replay FILE] [--log-level L] scene.yaml
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lbdem {
+
+struct CommandLine {
+  std::string scene;
+  bool check = false;
+  bool help = false;
+  bool version = false;
+  std::string replay;     // recording to replay this side from
+  std::string log_level;  // overrides the scene's log_level
+};
+
+// Throws std::invalid_argument with a user-facing message on bad arguments.
+CommandLine parse_command_line(const std::vector<std::string>& args);
+std::string usage(const std::string& app, const std::string& what);
+
+}  // namespace lbdem
