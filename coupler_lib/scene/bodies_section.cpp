@@ -2,32 +2,23 @@
 
 namespace lbdem {
 
-BodiesParams parse_bodies(Section& root) {
-  BodiesParams p;
-  for (auto& s : root.list("shapes", "catalogue of body shapes")) {
-    ShapeParams sh;
-    sh.name = s.require<std::string>("name", "shape name used by bodies");
-    sh.kind = s.require_choice("kind", {"sphere", "cube"}, "shape kind");
-    sh.size =
-        s.require<double>("size", "diameter (sphere) or edge (cube) in m", Bounds::positive());
-    s.finish();
-    p.shapes.push_back(sh);
-  }
+std::vector<BodyParams> parse_bodies(Section& root, const std::vector<ShapeParams>& shapes) {
+  std::vector<BodyParams> out;
   for (auto& s : root.list("bodies", "list of bodies")) {
     BodyParams b;
     const auto name = s.require<std::string>("shape", "name of a shape in the catalogue");
     b.shape = -1;
-    for (size_t i = 0; i < p.shapes.size(); ++i)
-      if (p.shapes[i].name == name) b.shape = static_cast<int>(i);
+    for (size_t i = 0; i < shapes.size(); ++i)
+      if (shapes[i].name == name) b.shape = static_cast<int>(i);
     if (b.shape < 0) s.fail("shape", "no shape named '" + name + "' in the shapes catalogue");
     b.position = s.require_vec3("position", "centre of mass in m");
     b.velocity = s.vec3("velocity", {0, 0, 0}, "initial velocity in m/s");
     b.angular_velocity = s.vec3("angular_velocity", {0, 0, 0}, "initial angular velocity in rad/s");
     b.density = s.require<double>("density", "body density in kg/m^3", Bounds::positive());
     s.finish();
-    p.bodies.push_back(b);
+    out.push_back(b);
   }
-  return p;
+  return out;
 }
 
 }  // namespace lbdem

@@ -34,7 +34,8 @@ Scene parse_scene(Section root, std::uint64_t hash) {
     sc.fluid = parse_fluid(*f);
   if (auto d = root.optional_section("dem", "discrete element bodies (LAMMPS)"))
     sc.dem = parse_dem(*d);
-  sc.bodies = parse_bodies(root);
+  sc.shapes = parse_shapes(root);
+  sc.bodies = parse_bodies(root, sc.shapes);
   if (auto c = root.optional_section("coupling", "fluid-DEM packet exchange")) {
     sc.coupling = parse_coupling(*c);
   }

@@ -10,6 +10,7 @@
 #include "coupler_lib/scene/coupling_section.hpp"
 #include "coupler_lib/scene/dem_section.hpp"
 #include "coupler_lib/scene/fluid_section.hpp"
+#include "coupler_lib/scene/shapes_section.hpp"
 #include "coupler_lib/scene/yaml_reader.hpp"
 
 namespace lbdem {
@@ -27,11 +28,12 @@ struct Scene {
   TimeParams time;
   std::optional<FluidParams> fluid;  // absent: DEM-only scene
   std::optional<DemParams> dem;      // absent: fluid-only scene
-  BodiesParams bodies;
+  std::vector<ShapeParams> shapes;
+  std::vector<BodyParams> bodies;
   CouplingParams coupling;
   std::shared_ptr<SceneSource> source;  // resolved keys, for --check
 
-  bool coupled() const { return fluid && dem && !bodies.bodies.empty(); }
+  bool coupled() const { return fluid && dem && !bodies.empty(); }
 };
 
 Scene load_scene(const std::string& file);
