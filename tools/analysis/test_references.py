@@ -1,0 +1,28 @@
+"""Checks the reference formulas against the derived numbers in reference-data.md."""
+import unittest
+
+import references as r
+
+
+class References(unittest.TestCase):
+    def test_sangani_acrivos_at_03(self):
+        self.assertAlmostEqual(r.sangani_acrivos_k(0.3), 12.10, delta=0.01)
+
+    def test_zick_homsy_agreement(self):
+        self.assertAlmostEqual(r.sangani_acrivos_k(0.216), 7.442, delta=0.01)
+
+    def test_hasimoto_low_at_03(self):
+        self.assertAlmostEqual(r.hasimoto_k(0.3), 11.58, delta=0.02)
+
+    def test_richardson_zaki_at_re_16_8(self):
+        self.assertAlmostEqual(r.richardson_zaki_exponent(16.8), 3.356, delta=0.002)
+        for phi, ratio in [(0.05, 0.842), (0.1, 0.702), (0.2, 0.473), (0.3, 0.302), (0.4, 0.180)]:
+            self.assertAlmostEqual(r.richardson_zaki(phi, 16.8), ratio, delta=0.001)
+
+    def test_cube_sphericity(self):
+        self.assertAlmostEqual(r.CUBE_SPHERICITY, 0.8060, delta=1e-4)
+        self.assertAlmostEqual(r.cube_volume_equivalent_diameter(1.0), 1.2407, delta=1e-4)
+
+
+if __name__ == "__main__":
+    unittest.main()
