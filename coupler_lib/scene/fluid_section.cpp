@@ -1,13 +1,84 @@
 #include "coupler_lib/scene/fluid_section.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace lbdem {
 
+namespace {
+
+constexpr const char* kFaceNames[6] = {"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
+
+FaceType face_type_from(const std::string& w) {
+  if (w == "wall") return FaceType::wall;
+  if (w == "moving_wall") return FaceType::moving_wall;
+  if (w == "pressure") return FaceType::pressure;
+  return FaceType::periodic;
+}
+
+const std::vector<std::string> kFaceTypes = {"periodic", "wall", "moving_wall", "pressure"};
+
+FaceBoundary parse_face(Section& b, int face) {
+  const std::string key = kFaceNames[face];
+  FaceBoundary fb;
+  const std::string doc = "boundary of the " + key + " face";
+  if (b.has(key) && b.node()[key].IsMap()) {
+    Section s = b.section(key, doc);
+    fb.type = face_type_from(s.require_choice("type", kFaceTypes, "boundary type"));
+    if (fb.type == FaceType::moving_wall) {
+      fb.velocity = s.require_vec3("velocity", "wall velocity in m/s (tangential)");
+      if (fb.velocity[face / 2] != 0.0)
+        s.fail("velocity", "a moving wall slides along its plane: the component along axis " +
+                               std::to_string(face / 2) + " (the face normal) must be 0");
+    }
+    if (fb.type == FaceType::pressure)
+      fb.pressure = s.get<double>("pressure", 0.0, "pressure in Pa relative to the reference");
+    s.finish();
+  } else {
+    fb.type = face_type_from(b.choice(key, "periodic", kFaceTypes, doc));
+    if (fb.type == FaceType::moving_wall)
+      b.fail(key,
+             "a moving wall needs its velocity: write {type: moving_wall, velocity: [u, v, w]}");
+  }
+  return fb;
+}
+
+}  // namespace
+
+const char* face_name(int face) {
+  return kFaceNames[face];
+}
+
+const char* face_type_name(FaceType t) {
+  switch (t) {
+    case FaceType::periodic:
+      return "periodic";
+    case FaceType::wall:
+      return "wall";
+    case FaceType::moving_wall:
+      return "moving_wall";
+    case FaceType::pressure:
+      return "pressure";
+  }
+  return "?";
+}
+
 FluidParams parse_fluid(Section& s) {
   FluidParams p;
   p.domain = s.require_vec3("domain", "box size [Lx, Ly, Lz] in m", Bounds::positive());
-  p.dx = s.require<double>("dx", "lattice spacing in m", Bounds::positive());
+  if (s.has("dx") == s.has("resolution"))
+    s.fail("",
+           "give the lattice spacing either as 'dx' (m) or as 'resolution: {length: L, "
+           "cells: N}' (a reference length L in m resolved by N cells), exactly one of them");
+  if (s.has("dx")) {
+    p.dx = s.require<double>("dx", "lattice spacing in m", Bounds::positive());
+  } else {
+    Section r = s.section("resolution", "reference length resolved by a number of cells");
+    const double length = r.require<double>("length", "reference length in m", Bounds::positive());
+    const int n = r.require<int>("cells", "cells across the reference length", Bounds::at_least(1));
+    r.finish();
+    p.dx = length / n;
+  }
   p.density = s.get<double>("density", 1000.0, "fluid density in kg/m^3", Bounds::positive());
   p.viscosity = s.require<double>("viscosity", "kinematic viscosity in m^2/s", Bounds::positive());
   p.tau = s.get<double>("tau", 0.6, "BGK relaxation time", Bounds::above(0.5));
@@ -19,7 +90,41 @@ FluidParams parse_fluid(Section& s) {
       s.fail("domain", "domain size must be a whole number of cells of dx; got " +
                            std::to_string(n) + " cells along axis " + std::to_string(d));
   }
+  p.characteristic_velocity = s.get<double>(
+      "characteristic_velocity", 0.0,
+      "expected flow speed in m/s (logs Mach and Re; 0 = not given)", Bounds::non_negative());
+  p.characteristic_length = s.get<double>(
+      "characteristic_length", *std::min_element(p.domain.begin(), p.domain.end()),
+      "length in m for the Reynolds number (default: smallest domain edge)", Bounds::positive());
+  p.body_force = s.vec3("body_force", {0, 0, 0}, "uniform acceleration of the fluid in m/s^2");
+  if (auto c = s.optional_section("mean_velocity_control",
+                                  "uniform force that holds the mean fluid velocity")) {
+    p.control.enabled = true;
+    p.control.target = c->vec3("target", {0, 0, 0}, "mean fluid velocity to hold, m/s");
+    p.control.gain =
+        c->get<double>("gain", 0.5, "proportional gain per step", Bounds{0.0, 1.0, true, false});
+    p.control.integral_gain =
+        c->get<double>("integral_gain", 0.05, "integral gain per step", Bounds::closed(0.0, 0.5));
+    c->finish();
+  }
+  if (auto b = s.optional_section("boundaries", "per-face boundary conditions")) {
+    for (int f = 0; f < 6; ++f) p.faces[f] = parse_face(*b, f);
+    for (int a = 0; a < 3; ++a) {
+      const bool lo = p.faces[2 * a].type == FaceType::periodic;
+      const bool hi = p.faces[2 * a + 1].type == FaceType::periodic;
+      if (lo != hi)
+        b->fail(kFaceNames[2 * a + (lo ? 1 : 0)],
+                std::string("periodic faces come in pairs: ") + kFaceNames[2 * a] + " and " +
+                    kFaceNames[2 * a + 1] + " must both be periodic or both not");
+    }
+    b->finish();
+  }
   p.units = UnitConverter::from_tau(p.dx, p.tau, p.viscosity, p.density);
+  p.units.char_velocity = p.characteristic_velocity;
+  p.units.char_length = p.characteristic_length;
+  const UnitConverter& u = p.units;
+  if (p.tau < UnitLimits{}.min_tau) s.fail("tau", u.check());
+  if (const std::string m = u.check(); !m.empty()) s.fail("characteristic_velocity", m);
   s.finish();
   return p;
 }

@@ -1,5 +1,24 @@
 #pragma once
-// The `fluid:` section of a scene: lattice, fluid properties, boundaries, forcing, output.
+// The `fluid:` section of a scene: lattice, fluid properties, boundaries, forcing.
+//
+//   fluid:
+//     domain: [0.01, 0.01, 0.02]      # m
+//     dx: 2.5e-4                      # m  (or resolution: {length: 0.001, cells: 4})
+//     viscosity: 1.0e-6               # m^2/s
+//     density: 1000                   # kg/m^3
+//     tau: 0.8
+//     precision: double               # or float
+//     characteristic_velocity: 0.05   # m/s, expected flow speed: logs Ma and Re, refuses Ma > 0.3
+//     characteristic_length: 0.001    # m, for Re (default: smallest domain edge)
+//     body_force: [0, 0, -9.81]       # m/s^2 acceleration of the fluid (uniform)
+//     mean_velocity_control: {target: [0, 0, 0], gain: 0.5, integral_gain: 0.05}
+//     boundaries:
+//       x_min: periodic               # periodic faces must be paired
+//       x_max: periodic
+//       y_min: {type: pressure, pressure: 0}   # Pa, gauge
+//       y_max: {type: pressure, pressure: 0}
+//       z_min: wall
+//       z_max: {type: moving_wall, velocity: [0.01, 0, 0]}
 #include <array>
 #include <string>
 
@@ -7,6 +26,25 @@
 #include "coupler_lib/scene/yaml_reader.hpp"
 
 namespace lbdem {
+
+enum class FaceType { periodic, wall, moving_wall, pressure };
+
+// One face of the box. Faces are indexed 2*axis + side (side 0 = min, 1 = max):
+// x_min, x_max, y_min, y_max, z_min, z_max.
+struct FaceBoundary {
+  FaceType type = FaceType::periodic;
+  std::array<double, 3> velocity{};  // m/s, moving_wall only (tangential part is what counts)
+  double pressure = 0;               // Pa relative to the reference pressure, pressure only
+};
+
+// PI controller on a uniform body force that holds the mean fluid velocity at `target`
+// (hindered settling in a triply periodic box: the force that balances the bodies' weight).
+struct MeanVelocityControl {
+  bool enabled = false;
+  std::array<double, 3> target{};  // m/s
+  double gain = 0.5;               // proportional gain, per step (1 = dead-beat without bodies)
+  double integral_gain = 0.05;     // integral gain, per step
+};
 
 struct FluidParams {
   std::array<double, 3> domain{};  // m, box size
@@ -16,9 +54,19 @@ struct FluidParams {
   double viscosity = 1e-6;         // kinematic, m^2/s
   double tau = 0.6;
   std::string precision = "double";
+  double characteristic_velocity = 0;  // m/s, 0 = not given
+  double characteristic_length = 0;    // m
+  std::array<double, 3> body_force{};  // m/s^2, uniform acceleration of the fluid
+  MeanVelocityControl control;
+  std::array<FaceBoundary, 6> faces{};  // default: triply periodic
   UnitConverter units;
+
+  bool periodic(int axis) const { return faces[2 * axis].type == FaceType::periodic; }
 };
 
 FluidParams parse_fluid(Section& s);
+
+const char* face_name(int face);  // "x_min", ..., "z_max"
+const char* face_type_name(FaceType t);
 
 }  // namespace lbdem

@@ -1,0 +1,99 @@
+#pragma once
+// D3Q19 BGK lattice Boltzmann solver on one rank's block of a uniform grid.
+//
+// One step = fused collide + stream over the rank's cells (AA pattern, in place, see
+// fluid_app/kernel/aa_kernel.hpp), halo exchange with the neighbour ranks (overlapped with the
+// inner cells' work), then the boundary links of non-periodic faces. After step() returns the
+// lattice holds the post-stream, pre-collision populations of the next step; every accessor
+// below hides the AA storage parity.
+//
+// Everything is in LATTICE units (dx = dt = 1, reference density 1); FluidParams::units
+// converts. Template on the floating type: FluidSolver<double> (default) and
+// FluidSolver<float> are the same code.
+#include <mpi.h>
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "coupler_lib/scene/fluid_section.hpp"
+#include "fluid_app/lattice/local_box.hpp"
+#include "fluid_app/parallel/decomposition.hpp"
+#include "fluid_app/porous_field.hpp"
+
+namespace lbdem {
+
+// Mean fluid velocity over the whole domain, weighted by porosity d (1 in fluid) and density:
+// u_mean = sum(d rho u*) / sum(d rho), u* the physical velocity (paper, Eq. physicalVelocity).
+// Sums are exact (fixed point) so the result does not depend on the rank count.
+struct MeanFlow {
+  std::array<double, 3> velocity{};  // lattice units
+  double mass = 0;                   // sum(d rho), lattice units
+};
+
+template <class T>
+class FluidSolverImpl;
+
+template <class T>
+class FluidSolver {
+ public:
+  // Collective over `comm` (the side communicator of fluid_app). Starts at rest, rho = 1.
+  // `dims` forces the process grid (0 = automatic), for tests.
+  FluidSolver(const FluidParams& params, MPI_Comm comm, std::array<int, 3> dims = {0, 0, 0});
+  ~FluidSolver();
+  FluidSolver(const FluidSolver&) = delete;
+  FluidSolver& operator=(const FluidSolver&) = delete;
+
+  // One time step (collective). Uses the current uniform force and porous field.
+  void step();
+  std::int64_t steps() const;
+
+  const LocalBox& box() const;
+  const Decomposition& decomposition() const;
+  MPI_Comm comm() const;  // the Cartesian communicator (same ranks as the one given)
+
+  // --- State after the last step (post-stream, pre-collision), any AA parity. ---
+  // Population i at a local cell. Valid for every interior cell, and for a ghost cell for
+  // each i whose source cell (cell - c_i) is interior: together, both populations of every
+  // lattice link with at least one interior end, which is what momentum exchange needs.
+  T population(int i, CellIndex cell) const;
+  T density(CellIndex cell) const;  // interior cells
+  // Physical velocity u* = v + F/(2 rho) + (1-d)(u_p - v)/2 with the current force and
+  // porous field (paper, Eq. physicalVelocity). Interior cells.
+  std::array<T, 3> velocity(CellIndex cell) const;
+  // Density and physical velocity of all interior cells, x fastest; u interleaved (3 per cell).
+  void macroscopic(std::vector<T>& rho, std::vector<T>& u) const;
+  // Overwrite one interior cell with the equilibrium at (rho, u) (initial conditions).
+  void set_equilibrium(CellIndex cell, T rho, std::array<T, 3> u);
+
+  // --- Forcing. ---
+  // Uniform body force density F (lattice units; momentum added per cell and step is F).
+  void set_uniform_force(std::array<double, 3> force);
+  std::array<double, 3> uniform_force() const;
+  // With fluid.mean_velocity_control enabled, each step sets the force to
+  //   feed_forward + rho0 [k_p e_n + k_i sum e_m],  e = target - u_mean,
+  // (the controller hook). Feed-forward: e.g. the known net weight of the bodies per cell.
+  void set_feed_forward_force(std::array<double, 3> force);
+  // Mean flow measured during the last step (only maintained with the controller enabled or
+  // after measure_mean_flow(true)).
+  MeanFlow mean_flow() const;
+  void measure_mean_flow(bool on);
+
+  // The porosity field (allocated on first call: d = 1, body = -1, inactive).
+  PorousField<T>& porous();
+  const PorousField<T>& porous() const;
+
+  // Bytes the kernel moves per cell update: 2 * 19 * sizeof(T) (+ 8 with the porous field).
+  static constexpr int bytes_per_cell_update(bool porous) {
+    return 2 * 19 * int(sizeof(T)) + (porous ? 8 : 0);
+  }
+
+ private:
+  std::unique_ptr<FluidSolverImpl<T>> impl_;
+};
+
+extern template class FluidSolver<double>;
+extern template class FluidSolver<float>;
+
+}  // namespace lbdem

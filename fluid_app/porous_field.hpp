@@ -1,0 +1,41 @@
+#pragma once
+// The porosity field of homogenized LBM (HLBM) as the kernel reads it.
+//
+// The HLBM part fills these arrays; the fluid kernel turns them into a velocity shift through
+// the same exact-difference (Kupershtokh) step that carries the uniform body force
+// (paper appendix, Eq. forcedShift):
+//   u+ = v + dt F / rho + (1 - d) (u_p - v),   u_p = v_b + omega_b x minimum_image(x - x_c).
+//
+// Contract for the filler (all values in LATTICE units, see UnitConverter):
+// * `d` and `body` have one entry per local cell INCLUDING the ghost layer, indexed like the
+//   lattice (LocalBox::index). The kernel reads only the rank's interior cells, so only those
+//   must be filled; ghosts may be filled for the filler's own use (momentum exchange).
+// * d = 1 fluid, 0 solid, in between on the smoothed surface. Cells with d == 1 are unaffected.
+// * body = index into `bodies`, or -1 for a static porous cell (u_p = 0).
+// * bodies[k].centre is the body's centre in global lattice coordinates, where global node g
+//   sits at g + 1/2 (so the SI position divided by dx). On periodic axes the kernel takes the
+//   minimum image of x - x_c with the global lattice length, so x_c may be any image.
+// * `active` = false skips all porous work (the solver then runs its plain kernel). Set it
+//   true once d/body are filled; FluidSolver::porous() allocates the arrays (d = 1, body = -1).
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace lbdem {
+
+template <class T>
+struct PorousBody {
+  std::array<T, 3> centre{};    // x_c, lattice units (global frame)
+  std::array<T, 3> velocity{};  // v, lattice units
+  std::array<T, 3> omega{};     // angular velocity, rad per time step
+};
+
+template <class T>
+struct PorousField {
+  bool active = false;
+  std::vector<float> d;               // porosity per local cell (with ghosts)
+  std::vector<std::int32_t> body;     // body index per local cell (with ghosts), -1 none
+  std::vector<PorousBody<T>> bodies;  // per-step body table
+};
+
+}  // namespace lbdem
