@@ -1,0 +1,26 @@
+#pragma once
+// The XDMF (version 2) description of a series of HDF5 field files: one temporal collection
+// of uniform 3DCoRectMesh grids, one grid per output time, which ParaView opens directly
+// ("Xdmf Reader"). Nodes are the lattice nodes at the cell centres.
+#include <string>
+#include <vector>
+
+#include "fluid_app/output/field_file.hpp"
+#include "fluid_app/output/field_view.hpp"
+
+namespace lbdem {
+
+struct XdmfStep {
+  double time = 0;
+  std::string h5_file;  // path relative to the XDMF file
+};
+
+// The complete XDMF text for `view` over all `steps`.
+std::string xdmf_text(const FieldView& view, const FieldQuantities& what, double dx,
+                      const std::vector<XdmfStep>& steps);
+
+// Writes `text` to `path` through a temporary file and a rename, so a reader (or a run that
+// dies during output) never sees half a file.
+void write_file_atomically(const std::string& path, const std::string& text);
+
+}  // namespace lbdem

@@ -1,0 +1,150 @@
+#include "fluid_app/stability_watch.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+
+#include "fluid_app/output/domain_means.hpp"
+#include "fluid_app/output/field_file.hpp"
+#include "fluid_app/output/xdmf_file.hpp"
+
+namespace lbdem {
+
+LocalScan scan_block(const MacroFields& f, double max_mach) {
+  LocalScan s;
+  const LocalBox& b = f.box;
+  // Global x-fastest order of the nodes, so "first" means the same on any decomposition.
+  auto global_order = [&](int i, int j, int k) {
+    return (static_cast<long long>(k + b.lo[2]) * b.global[1] + (j + b.lo[1])) * b.global[0] +
+           (i + b.lo[0]);
+  };
+  long long first = std::numeric_limits<long long>::max();
+  for (int k = 0; k < b.n[2]; ++k)
+    for (int j = 0; j < b.n[1]; ++j)
+      for (int i = 0; i < b.n[0]; ++i) {
+        const std::size_t c = b.index(i, j, k);
+        const double rho = f.rho[c], ux = f.u[3 * c], uy = f.u[3 * c + 1], uz = f.u[3 * c + 2];
+        Instability kind = Instability::none;
+        const double mach = lattice_mach(ux, uy, uz);
+        if (!std::isfinite(rho) || !std::isfinite(mach))
+          kind = Instability::not_finite;
+        else if (rho <= 0)
+          kind = Instability::density;
+        else if (mach > max_mach)
+          kind = Instability::mach;
+        if (std::isfinite(mach) && mach > s.max_mach) s.max_mach = mach;
+        if (kind == Instability::none || kind < s.kind) continue;
+        if (kind > s.kind) {
+          s.kind = kind;
+          s.bad_cells = 0;
+          first = std::numeric_limits<long long>::max();
+          s.mach = -1;
+        }
+        ++s.bad_cells;
+        const long long order = global_order(i, j, k);
+        const bool better = kind == Instability::mach ? mach > s.mach : order < first;
+        if (better) {
+          first = order;
+          s.cell = {i + b.lo[0], j + b.lo[1], k + b.lo[2]};
+          s.rho = rho;
+          s.u = {ux, uy, uz};
+          s.mach = mach;
+        }
+      }
+  return s;
+}
+
+StabilityWatch::StabilityWatch(const StabilityParams& params, const UnitConverter& units,
+                               MPI_Comm comm, std::string last_good_file)
+    : params_(params), units_(units), comm_(comm), last_good_file_(std::move(last_good_file)) {}
+
+namespace {
+
+// The node every rank reports: largest Mach for Mach trouble, else the first node in global
+// order. Ties between ranks go to the lowest rank (MPI_MAXLOC / MPI_MINLOC).
+int reporting_rank(const LocalScan& s, Instability kind, const LocalBox& b, MPI_Comm comm) {
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  struct {
+    double value;
+    int rank;
+  } mine{0.0, rank}, best{0.0, 0};
+  if (kind == Instability::mach) {
+    mine.value = s.kind == kind ? s.mach : -1.0;
+    MPI_Allreduce(&mine, &best, 1, MPI_DOUBLE_INT, MPI_MAXLOC, comm);
+  } else {
+    const double order =
+        (static_cast<double>(s.cell[2]) * b.global[1] + s.cell[1]) * b.global[0] + s.cell[0];
+    mine.value = s.kind == kind ? order : std::numeric_limits<double>::infinity();
+    MPI_Allreduce(&mine, &best, 1, MPI_DOUBLE_INT, MPI_MINLOC, comm);
+  }
+  return best.rank;
+}
+
+}  // namespace
+
+std::optional<StabilityFailure> StabilityWatch::check(long step, double time,
+                                                      const MacroFields& fields) {
+  const LocalScan s = scan_block(fields, params_.max_mach);
+  int kind = static_cast<int>(s.kind);
+  MPI_Allreduce(MPI_IN_PLACE, &kind, 1, MPI_INT, MPI_MAX, comm_);
+  if (kind == static_cast<int>(Instability::none)) {
+    double mach = s.max_mach;
+    MPI_Allreduce(MPI_IN_PLACE, &mach, 1, MPI_DOUBLE, MPI_MAX, comm_);
+    last_good_ = fields;
+    last_good_step_ = step;
+    last_good_time_ = time;
+    last_good_mach_ = mach;
+    return std::nullopt;
+  }
+
+  InstabilityReport r;
+  r.kind = static_cast<Instability>(kind);
+  const int root = reporting_rank(s, r.kind, fields.box, comm_);
+  // One node's description travels from the rank that holds it to everyone.
+  std::array<double, 8> node{double(s.cell[0]),
+                             double(s.cell[1]),
+                             double(s.cell[2]),
+                             s.rho,
+                             s.u[0],
+                             s.u[1],
+                             s.u[2],
+                             s.mach};
+  MPI_Bcast(node.data(), 8, MPI_DOUBLE, root, comm_);
+  long long bad = s.kind == r.kind ? s.bad_cells : 0;
+  MPI_Allreduce(MPI_IN_PLACE, &bad, 1, MPI_LONG_LONG, MPI_SUM, comm_);
+  r.cell = {int(node[0]), int(node[1]), int(node[2])};
+  r.rho = node[3];
+  r.u = {node[4], node[5], node[6]};
+  r.mach = node[7];
+  r.bad_cells = bad;
+  r.step = step;
+  r.time = time;
+  r.last_good_step = last_good_step_;
+  r.last_good_time = last_good_time_;
+  r.last_good_mach = last_good_mach_;
+  r.max_mach = params_.max_mach;
+
+  StabilityFailure failure;
+  failure.report = r;
+  if (last_good_step_ >= 0) {
+    const FieldView view = volume_view(last_good_.box.global, 1);
+    const FieldQuantities all{true, true, true, true};
+    write_field_file(last_good_file_, comm_, {view}, all, last_good_, units_, last_good_step_,
+                     last_good_time_);
+    int rank = 0;
+    MPI_Comm_rank(comm_, &rank);
+    if (rank == 0) {
+      const std::filesystem::path h5(last_good_file_);
+      std::filesystem::path xdmf = h5;
+      xdmf.replace_extension(".xdmf");
+      write_file_atomically(xdmf.string(), xdmf_text(view, all, units_.dx,
+                                                     {{last_good_time_, h5.filename().string()}}));
+    }
+    failure.last_good_file = last_good_file_;
+  }
+  failure.message = describe_instability(r, units_, failure.last_good_file);
+  return failure;
+}
+
+}  // namespace lbdem

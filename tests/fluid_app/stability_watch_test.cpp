@@ -1,0 +1,113 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+
+#include "fluid_app/stability_watch.hpp"
+#include "output_test_support.hpp"
+
+namespace lbdem {
+namespace {
+
+const UnitConverter kUnits = UnitConverter::from_tau(0.001, 0.6, 1e-6, 1000.0);
+
+MacroFields calm(const LocalBox& box) {
+  MacroFields f;
+  f.resize(box);
+  std::fill(f.rho.begin(), f.rho.end(), 1.0);
+  std::fill(f.u.begin(), f.u.end(), 0.01);
+  return f;
+}
+
+TEST(StabilityScan, WorstKindWinsAndFirstNodeIsInGlobalOrder) {
+  LocalBox box{{8, 8, 8}, {2, 0, 4}, {4, 3, 2}};
+  MacroFields f = calm(box);
+  f.u[3 * box.index(3, 2, 1)] = 0.5;  // Mach 0.87
+  f.rho[box.index(1, 1, 1)] = -0.1;
+  f.rho[box.index(2, 2, 0)] = -0.2;  // earlier in global order (lower z)
+  LocalScan s = scan_block(f, 0.3);
+  EXPECT_EQ(s.kind, Instability::density);
+  EXPECT_EQ(s.bad_cells, 2);
+  EXPECT_EQ(s.cell, (std::array<int, 3>{4, 2, 4}));
+  EXPECT_DOUBLE_EQ(s.rho, -0.2);
+
+  f.u[3 * box.index(0, 2, 1) + 2] = std::numeric_limits<double>::quiet_NaN();
+  s = scan_block(f, 0.3);
+  EXPECT_EQ(s.kind, Instability::not_finite);
+  EXPECT_EQ(s.cell, (std::array<int, 3>{2, 2, 5}));
+}
+
+TEST(StabilityScan, MachReportsTheFastestNode) {
+  LocalBox box{{4, 4, 4}, {0, 0, 0}, {4, 4, 4}};
+  MacroFields f = calm(box);
+  f.u[3 * box.index(1, 0, 0)] = 0.2;
+  f.u[3 * box.index(3, 3, 3) + 1] = -0.25;
+  const LocalScan s = scan_block(f, 0.3);
+  EXPECT_EQ(s.kind, Instability::mach);
+  EXPECT_EQ(s.bad_cells, 2);
+  EXPECT_EQ(s.cell, (std::array<int, 3>{3, 3, 3}));
+  EXPECT_NEAR(s.mach, std::sqrt(3.0 * (0.25 * 0.25 + 2e-4)), 1e-12);
+}
+
+TEST(StabilityDiagnosis, MachMessageSaysWhereWhenAndWhatToChange) {
+  InstabilityReport r;
+  r.kind = Instability::mach;
+  r.cell = {3, 4, 5};
+  r.mach = 0.45;
+  r.max_mach = 0.3;
+  r.step = 1200;
+  r.time = 0.5;
+  r.last_good_step = 1100;
+  const std::string m = describe_instability(r, kUnits, "out/x_last_good.h5");
+  EXPECT_NE(m.find("Mach 0.45 > 0.3"), std::string::npos) << m;
+  EXPECT_NE(m.find("cell (3, 4, 5) at x = (0.0035, 0.0045, 0.0055) m"), std::string::npos) << m;
+  EXPECT_NE(m.find("step 1200, t = 0.5 s"), std::string::npos) << m;
+  // Mach scales with dx and with tau - 1/2: 0.001 * 0.3/0.45 and 0.5 + 0.1 * 0.3/0.45.
+  EXPECT_NE(m.find("fluid.dx to <= 0.0006667 m"), std::string::npos) << m;
+  EXPECT_NE(m.find("fluid.tau to <= 0.5667"), std::string::npos) << m;
+  EXPECT_NE(m.find("written to out/x_last_good.h5"), std::string::npos) << m;
+}
+
+TEST(StabilityWatch, FailingCheckWritesTheLastGoodState) {
+  test::ScratchDir dir("lbdem_stability");
+  const std::string lg = dir.file("lg.h5");
+  StabilityParams p;
+  p.interval = 10;
+  StabilityWatch w(p, kUnits, MPI_COMM_SELF, lg);
+  EXPECT_TRUE(w.due(20));
+  EXPECT_FALSE(w.due(25));
+  LocalBox box{{3, 2, 2}, {0, 0, 0}, {3, 2, 2}};
+  MacroFields f = calm(box);
+  EXPECT_FALSE(w.check(10, 0.1, f));
+  f.rho[box.index(2, 1, 0)] = 1.25;  // still fine: becomes the last good state
+  EXPECT_FALSE(w.check(20, 0.2, f));
+  EXPECT_FALSE(std::filesystem::exists(lg));
+
+  MacroFields bad = f;
+  bad.rho[box.index(1, 1, 1)] = std::numeric_limits<double>::infinity();
+  const auto failure = w.check(30, 0.3, bad);
+  ASSERT_TRUE(failure);
+  EXPECT_EQ(failure->report.kind, Instability::not_finite);
+  EXPECT_EQ(failure->report.cell, (std::array<int, 3>{1, 1, 1}));
+  EXPECT_EQ(failure->last_good_file, lg);
+  EXPECT_NE(failure->message.find("not finite"), std::string::npos) << failure->message;
+  EXPECT_NE(failure->message.find("step 20"), std::string::npos) << failure->message;
+  ASSERT_TRUE(std::filesystem::exists(lg));
+  EXPECT_TRUE(std::filesystem::exists(dir.file("lg.xdmf")));
+  EXPECT_DOUBLE_EQ(test::read_double_attribute(lg, "/", "time"), 0.2);
+  const auto rho = test::read_dataset(lg, "/volume/density");
+  ASSERT_EQ(rho.values.size(), 12u);
+  EXPECT_DOUBLE_EQ(rho.values[box.index(2, 1, 0)], 1250.0);
+}
+
+TEST(StabilityWatch, IntervalZeroSwitchesItOff) {
+  StabilityParams p;
+  p.interval = 0;
+  StabilityWatch w(p, kUnits, MPI_COMM_SELF, "unused.h5");
+  EXPECT_FALSE(w.due(0));
+  EXPECT_FALSE(w.due(100));
+}
+
+}  // namespace
+}  // namespace lbdem
