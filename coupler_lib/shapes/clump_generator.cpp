@@ -52,6 +52,69 @@ void add_center_sphere(const SolidGeometry& solid, const Voxels& voxels, Clump& 
   clump.radii.push_back(solid.distance_to_surface(c));
 }
 
+// Depth of x below the surface (negative outside).
+double depth(const SolidGeometry& solid, const Eigen::Vector3d& x) {
+  const double d = solid.distance_to_surface(x);
+  return solid.inside(x) ? d : -d;
+}
+
+// Moves a voxel centre within its cell to where the inscribed sphere is largest (compass
+// search on the exact depth): a lattice with an even count across a symmetric shape has no
+// voxel at the centre, and the first sphere would otherwise be short by up to sqrt(3) h/2.
+Eigen::Vector3d deepest_in_cell(const SolidGeometry& solid, const Eigen::Vector3d& c0, double h) {
+  Eigen::Vector3d p = c0;
+  double best = depth(solid, p);
+  for (double step = 0.5 * h; step > 1e-4 * h;) {
+    bool moved = false;
+    for (int d = 0; d < 3 && !moved; ++d)
+      for (double sign : {-1.0, 1.0}) {
+        Eigen::Vector3d q = p;
+        q[d] += sign * step;
+        if (std::abs(q[d] - c0[d]) > 0.5 * h) continue;
+        const double dq = depth(solid, q);
+        if (dq > best) {
+          best = dq;
+          p = q;
+          moved = true;
+          break;
+        }
+      }
+    if (!moved) step *= 0.5;
+  }
+  return p;
+}
+
+// Voxels not reachable from the lattice boundary through empty voxels (6-connected flood
+// fill) become solid: a cavity enclosed by the spheres cannot be reached by another body,
+// so it is not a shape error that contacts can see.
+void fill_cavities(Voxels& v) {
+  std::vector<std::uint8_t> outside(v.solid.size(), 0);
+  std::vector<std::array<int, 3>> stack;
+  auto push = [&](int i, int j, int k) {
+    if (i < 0 || j < 0 || k < 0 || i >= v.n[0] || j >= v.n[1] || k >= v.n[2]) return;
+    const auto id = v.index(i, j, k);
+    if (v.solid[id] || outside[id]) return;
+    outside[id] = 1;
+    stack.push_back({i, j, k});
+  };
+  for (int k = 0; k < v.n[2]; ++k)
+    for (int j = 0; j < v.n[1]; ++j)
+      for (int i = 0; i < v.n[0]; ++i)
+        if (i == 0 || j == 0 || k == 0 || i == v.n[0] - 1 || j == v.n[1] - 1 || k == v.n[2] - 1)
+          push(i, j, k);
+  while (!stack.empty()) {
+    const auto [i, j, k] = stack.back();
+    stack.pop_back();
+    push(i - 1, j, k);
+    push(i + 1, j, k);
+    push(i, j - 1, k);
+    push(i, j + 1, k);
+    push(i, j, k - 1);
+    push(i, j, k + 1);
+  }
+  for (std::size_t id = 0; id < v.solid.size(); ++id) v.solid[id] = !outside[id];
+}
+
 }  // namespace
 
 Clump surface_clump(const SolidGeometry& solid, const Voxels& voxels,
@@ -146,7 +209,7 @@ Clump fill_clump(const SolidGeometry& solid, const Voxels& voxels, const FillClu
     const int i = static_cast<int>(id % voxels.n[0]);
     const int j = static_cast<int>((id / voxels.n[0]) % voxels.n[1]);
     const int k = static_cast<int>(id / plane);
-    const Eigen::Vector3d c = voxels.center(i, j, k);
+    const Eigen::Vector3d c = deepest_in_cell(solid, voxels.center(i, j, k), voxels.h);
     // The exact depth of the centre: the largest sphere there that stays inside.
     const double r = solid.distance_to_surface(c);
     clump.centers.push_back(c);
@@ -168,14 +231,20 @@ Voxels clump_voxels(const Clump& clump, const Voxels& lattice) {
 ClumpQuality clump_quality(const Clump& clump, const Voxels& voxels) {
   ClumpQuality q;
   q.lattice_spacing = voxels.h;
-  const Voxels cv = clump_voxels(clump, voxels);
-  const auto dist = distance_to_other_kind(voxels);
+  Voxels cv = clump_voxels(clump, voxels);
+  fill_cavities(cv);
+  // Two-sided (Hausdorff) deviation: a voxel of the shape the clump misses is as far off as
+  // the nearest clump voxel, a clump voxel outside the shape as far as the nearest shape
+  // voxel; centre-to-centre distances less h/2 approximate the surface-to-point distance.
+  const auto to_shape = distance_to_other_kind(voxels);
+  const auto to_clump = distance_to_other_kind(cv);
   std::size_t mismatch = 0, solid = 0;
   for (std::size_t i = 0; i < voxels.solid.size(); ++i) {
     solid += voxels.solid[i];
     if (cv.solid[i] == voxels.solid[i]) continue;
     ++mismatch;
-    q.max_deviation = std::max(q.max_deviation, dist[i] - 0.5 * voxels.h);
+    const double d = voxels.solid[i] ? to_clump[i] : to_shape[i];
+    q.max_deviation = std::max(q.max_deviation, d - 0.5 * voxels.h);
   }
   q.volume_error = solid ? double(mismatch) / double(solid) : 0.0;
   // A clump reaching beyond the lattice is mismatched outside it too; count what sticks out.

@@ -8,9 +8,10 @@
 //   For a cube these are the n^3 - (n-2)^3 = 6n^2 - 12n + 8 points on the faces of an n^3
 //   grid; with the centre sphere: n = 10 -> 489, n = 20 -> 2169 (the paper's cubes).
 // fill: greedy largest-inscribed-sphere filling on the voxelization, in the spirit of the
-//   CLUMP library's Euclidean-distance-transform method: repeatedly centre a sphere on the
-//   not yet covered solid voxel farthest from the surface, with radius equal to its exact
-//   distance to the surface, and mark the voxels it covers, until `spheres` are placed.
+//   CLUMP library's Euclidean-distance-transform method: repeatedly take the not yet
+//   covered solid voxel farthest from the surface, move its centre within the cell to the
+//   deepest point, place a sphere there with radius equal to the exact distance to the
+//   surface, and mark the voxels it covers, until `spheres` are placed or all are covered.
 #include "coupler_lib/shapes/shape.hpp"
 #include "coupler_lib/shapes/solid_geometry.hpp"
 
@@ -34,8 +35,10 @@ Clump fill_clump(const SolidGeometry& solid, const Voxels& voxels, const FillClu
 
 // Shape error of a clump against a voxelization in the same frame: volume of the symmetric
 // difference of the clump union and the solid voxels relative to the solid volume, and the
-// largest distance from the surface of any voxel in that symmetric difference
-// (distance transform minus h/2, so resolution +-h/2).
+// two-sided (Hausdorff) distance between the two: for each voxel of that symmetric
+// difference, the distance to the nearest voxel of the other body (distance transform minus
+// h/2, so resolution about h/2). Cavities enclosed by the spheres
+// (the inside of a surface clump) count as part of the clump: no other body can reach them.
 ClumpQuality clump_quality(const Clump& clump, const Voxels& voxels);
 
 // Voxels (same lattice) whose centre lies in at least one sphere of the clump.
