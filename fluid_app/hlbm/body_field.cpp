@@ -1,0 +1,347 @@
+#include "fluid_app/hlbm/body_field.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+namespace lbdem::hlbm {
+
+namespace {
+
+// A body whose surface moves by less than this (cells) since the last update is updated
+// incrementally: its porous band is about two cells wide, so no cell can go from interior
+// to fluid (or back) without being in the old or the new band.
+constexpr double kMaxIncrementalMove = 1.0;
+
+}  // namespace
+
+template <class T>
+BodyField<T>::BodyField(std::span<const Shape> shapes, const Subdomain& sub,
+                        const LatticeFrame& frame, PorousField<T>& field)
+    : sub_(sub), frame_(frame), field_(field) {
+  const auto cells = static_cast<std::size_t>(sub.box.cells_with_ghosts());
+  if (cells >= std::numeric_limits<std::uint32_t>::max())
+    throw std::invalid_argument("BodyField: local box too large for 32-bit cell indices");
+  if (!(frame.units.dx > 0) || !(frame.units.dt > 0))
+    throw std::invalid_argument("BodyField: unit converter without a positive dx and dt");
+  field_.d.assign(cells, 1.0f);
+  field_.body.assign(cells, -1);
+  field_.bodies.clear();
+  field_.active = false;
+  inside_.assign(cells, -1);
+  mark_.assign(cells, 0u);
+  shapes_.reserve(shapes.size());
+  for (const Shape& s : shapes) shapes_.emplace_back(s.voxels);
+}
+
+template <class T>
+std::int32_t BodyField<T>::slot_of(std::int64_t id) const {
+  const auto it = slots_.find(id);
+  return it == slots_.end() ? -1 : it->second;
+}
+
+template <class T>
+float BodyField<T>::body_porosity(std::int64_t id, CellIndex cell) const {
+  const std::int32_t slot = slot_of(id);
+  if (slot < 0) return 1.0f;
+  return porosity(tracked_[static_cast<std::size_t>(slot)], static_cast<std::uint32_t>(cell));
+}
+
+template <class T>
+void BodyField<T>::next_epoch() {
+  if (++epoch_ == 0) {  // wrapped: forget all marks
+    std::fill(mark_.begin(), mark_.end(), 0u);
+    epoch_ = 1;
+  }
+}
+
+template <class T>
+void BodyField<T>::set_pose(Tracked& t, const BodyState& s) const {
+  const double dx = frame_.units.dx;
+  for (int a = 0; a < 3; ++a) {
+    double x = (s.x[a] - frame_.origin[a]) / dx;
+    const double len = sub_.box.global[a];
+    if (sub_.periodic[a]) x -= len * std::floor(x / len);
+    t.x[a] = x;
+  }
+  const Eigen::Quaterniond q(s.q[0], s.q[1], s.q[2], s.q[3]);
+  if (!(q.norm() > 0.5))
+    throw std::invalid_argument("BodyField: body " + std::to_string(s.id) +
+                                " has a degenerate orientation quaternion");
+  t.rot = q.normalized().toRotationMatrix();
+  t.to_ref = t.rot.transpose() * (dx / shapes_[static_cast<std::size_t>(t.shape)].spacing());
+}
+
+// Paper, appendix "Representation of a particle in the fluid": the node is mapped into the
+// shape frame (minimum-image offset from the centre, rotated by q^-1) and gets the smoothed
+// reference porosity there.
+template <class T>
+float BodyField<T>::porosity(const Tracked& t, std::uint32_t cell) const {
+  const auto l = sub_.box.coords(cell);
+  Eigen::Vector3d r;
+  for (int a = 0; a < 3; ++a) r[a] = sub_.min_image(a, sub_.position(a, l[a]) - t.x[a]);
+  const ReferencePorosity& ref = shapes_[static_cast<std::size_t>(t.shape)];
+  return static_cast<float>(ref.at(t.to_ref * r + ref.shift()));
+}
+
+template <class T>
+float BodyField<T>::evaluate(std::int32_t slot, std::uint32_t cell, std::vector<BandCell>& band,
+                             UpdateStats& stats) {
+  mark_[cell] = epoch_;
+  touched_.push_back(cell);
+  ++stats.evaluated;
+  const float d = porosity(tracked_[static_cast<std::size_t>(slot)], cell);
+  std::int32_t& in = inside_[cell];
+  if (d == 0.0f) {
+    if (in >= 0 && in != slot) ++stats.interior_conflicts;
+    in = slot;
+  } else {
+    if (in == slot) in = -1;
+    if (d < 1.0f) band.push_back({cell, d});
+  }
+  return d;
+}
+
+// Local coordinates (0..n+1) of the stored copies of global node `global` along an axis:
+// none, one, or, on a periodic axis spanned by one rank, two (interior cell and ghost).
+template <class T>
+int BodyField<T>::local_images(int axis, long global, std::array<int, 3>& out) const {
+  const LocalBox& box = sub_.box;
+  int count = 0;
+  if (!sub_.periodic[axis]) {
+    const long l = global - box.offset[axis] + 1;
+    if (sub_.stored(axis, static_cast<int>(l))) out[count++] = static_cast<int>(l);
+    return count;
+  }
+  const long n = box.global[axis];
+  const long w = ((global % n) + n) % n;
+  for (long m = -1; m <= 1; ++m) {
+    const long l = w + m * n - box.offset[axis] + 1;
+    if (l >= 0 && l <= box.n[axis] + 1) out[count++] = static_cast<int>(l);
+  }
+  return count;
+}
+
+// Local coordinates per axis within the support radius of a body (plus one cell).
+template <class T>
+std::array<std::vector<int>, 3> BodyField<T>::support(const Tracked& t) const {
+  const double radius =
+      shapes_[static_cast<std::size_t>(t.shape)].support_radius() / frame_.units.dx + 1.0;
+  std::array<std::vector<int>, 3> lists;
+  for (int a = 0; a < 3; ++a)
+    for (int l = 0; l <= sub_.box.n[a] + 1; ++l)
+      if (std::abs(sub_.min_image(a, sub_.position(a, l) - t.x[a])) <= radius)
+        lists[a].push_back(l);
+  return lists;
+}
+
+// Embeds a body from scratch: every stored cell within its support (cost ~ volume; used
+// when a body appears or jumps).
+template <class T>
+void BodyField<T>::scan(std::int32_t slot, std::vector<BandCell>& band, UpdateStats& stats) {
+  const auto lists = support(tracked_[static_cast<std::size_t>(slot)]);
+  ++stats.full_scans;
+  for (int z : lists[2])
+    for (int y : lists[1])
+      for (int x : lists[0]) {
+        const auto c = static_cast<std::uint32_t>(sub_.box.index(x, y, z));
+        if (mark_[c] != epoch_) evaluate(slot, c, band, stats);
+      }
+}
+
+// Takes a body out of the field at its last pose: its band cells and the interior cells it
+// holds (found by a scan of its support, cost ~ volume; bodies leave a rank rarely).
+template <class T>
+void BodyField<T>::remove(std::int32_t slot, UpdateStats& stats) {
+  Tracked& t = tracked_[static_cast<std::size_t>(slot)];
+  for (const BandCell& b : t.band) touched_.push_back(b.cell);
+  t.band.clear();
+  const auto lists = support(t);
+  ++stats.full_scans;
+  for (int z : lists[2])
+    for (int y : lists[1])
+      for (int x : lists[0]) {
+        const auto c = static_cast<std::uint32_t>(sub_.box.index(x, y, z));
+        if (inside_[c] == slot) {
+          inside_[c] = -1;
+          touched_.push_back(c);
+        }
+      }
+}
+
+// The surface-only update (paper: "only the nodes currently covered by a body and a
+// surrounding growth layer have to be revisited"). Candidates: the old band (cells that may
+// leave it), the nodes nearest to the body's mapped surface voxels (so band pieces entering
+// the box are found too) and, grown from these, every cell 26-connected to a new band cell.
+// Interior cells (d = 0) not reached keep their value: with a move below
+// kMaxIncrementalMove they cannot have left the interior without entering the new band.
+template <class T>
+void BodyField<T>::follow_band(std::int32_t slot, std::vector<BandCell>& band, UpdateStats& stats) {
+  const LocalBox& box = sub_.box;
+  const Tracked& t = tracked_[static_cast<std::size_t>(slot)];
+  queue_.clear();
+  for (const BandCell& b : t.band)
+    if (mark_[b.cell] != epoch_) {
+      const float d = evaluate(slot, b.cell, band, stats);
+      if (d > 0.0f && d < 1.0f) queue_.push_back(b.cell);
+    }
+
+  const ReferencePorosity& ref = shapes_[static_cast<std::size_t>(t.shape)];
+  const Eigen::Matrix3d to_lattice = t.rot / frame_.units.dx;
+  std::array<std::array<int, 3>, 3> img;
+  std::array<int, 3> cnt;
+  for (const Eigen::Vector3d& s : ref.surface()) {
+    const Eigen::Vector3d p = t.x + to_lattice * s;
+    // Node g sits at g + 1/2: the nearest node to p is floor(p).
+    for (int a = 0; a < 3; ++a)
+      cnt[a] = local_images(a, static_cast<long>(std::floor(p[a])), img[a]);
+    for (int i = 0; i < cnt[0]; ++i)
+      for (int j = 0; j < cnt[1]; ++j)
+        for (int k = 0; k < cnt[2]; ++k) {
+          const auto c = static_cast<std::uint32_t>(box.index(img[0][i], img[1][j], img[2][k]));
+          if (mark_[c] == epoch_) continue;
+          evaluate(slot, c, band, stats);
+          queue_.push_back(c);  // seeds grow whatever their own porosity
+        }
+  }
+
+  for (std::size_t head = 0; head < queue_.size(); ++head) {
+    const auto l = box.coords(queue_[head]);
+    for (int dz = -1; dz <= 1; ++dz)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int x = l[0] + dx, y = l[1] + dy, z = l[2] + dz;
+          if (!sub_.stored(0, x) || !sub_.stored(1, y) || !sub_.stored(2, z)) continue;
+          const auto c = static_cast<std::uint32_t>(box.index(x, y, z));
+          if (mark_[c] == epoch_) continue;
+          const float d = evaluate(slot, c, band, stats);
+          if (d > 0.0f && d < 1.0f) queue_.push_back(c);
+        }
+  }
+}
+
+// Upper bound (cells) of how far any point of the body's support moved.
+template <class T>
+double BodyField<T>::displacement(const Tracked& t, const Tracked& next) const {
+  Eigen::Vector3d dx;
+  for (int a = 0; a < 3; ++a) dx[a] = sub_.min_image(a, next.x[a] - t.x[a]);
+  // |(R' - R) s| <= ||R' - R||_F |s|.
+  const double arm = shapes_[static_cast<std::size_t>(t.shape)].support_radius() / frame_.units.dx;
+  return dx.norm() + (next.rot - t.rot).norm() * arm;
+}
+
+// Two-body rule: a cell covered by several bodies gets the smallest porosity, d = min_k d_k,
+// and the index of the body with that porosity (the most solid one; ties: smallest id). The
+// cells re-evaluated in this update start from the interior map (d = 0 inside a body, else
+// fluid with body -1); then every band of every body lowers them.
+template <class T>
+void BodyField<T>::combine(std::span<const std::int32_t> order) {
+  for (std::uint32_t c : touched_) {
+    field_.body[c] = inside_[c];
+    field_.d[c] = inside_[c] >= 0 ? 0.0f : 1.0f;
+  }
+  for (std::int32_t slot : order)
+    for (const BandCell& b : tracked_[static_cast<std::size_t>(slot)].band)
+      if (b.d < field_.d[b.cell]) {
+        field_.d[b.cell] = b.d;
+        field_.body[b.cell] = slot;
+      }
+}
+
+template <class T>
+UpdateStats BodyField<T>::update(std::span<const BodyState> states, UpdateMode mode) {
+  UpdateStats stats;
+  touched_.clear();
+
+  std::vector<std::size_t> by_id(states.size());
+  std::iota(by_id.begin(), by_id.end(), std::size_t{0});
+  std::sort(by_id.begin(), by_id.end(),
+            [&](std::size_t a, std::size_t b) { return states[a].id < states[b].id; });
+  std::vector<std::int64_t> ids(by_id.size());
+  for (std::size_t i = 0; i < by_id.size(); ++i) {
+    const BodyState& s = states[by_id[i]];
+    ids[i] = s.id;
+    if (i > 0 && ids[i - 1] == s.id)
+      throw std::invalid_argument("BodyField: body " + std::to_string(s.id) +
+                                  " delivered twice in one update");
+    if (s.shape < 0 || static_cast<std::size_t>(s.shape) >= shapes_.size())
+      throw std::invalid_argument("BodyField: body " + std::to_string(s.id) + " has shape " +
+                                  std::to_string(s.shape) + " but the catalogue has " +
+                                  std::to_string(shapes_.size()) + " shapes");
+  }
+
+  // Bodies that are gone.
+  for (std::size_t slot = 0; slot < tracked_.size(); ++slot) {
+    Tracked& t = tracked_[slot];
+    if (t.id < 0 || std::binary_search(ids.begin(), ids.end(), t.id)) continue;
+    if (mode == UpdateMode::incremental) remove(static_cast<std::int32_t>(slot), stats);
+    slots_.erase(t.id);
+    t = Tracked{};
+    field_.bodies[slot] = PorousBody<T>{};
+  }
+  if (mode == UpdateMode::full) {
+    std::fill(field_.d.begin(), field_.d.end(), 1.0f);
+    std::fill(field_.body.begin(), field_.body.end(), -1);
+    std::fill(inside_.begin(), inside_.end(), -1);
+    for (Tracked& t : tracked_) t.band.clear();
+  }
+
+  std::vector<std::int32_t> order;
+  order.reserve(by_id.size());
+  for (std::size_t i : by_id) {
+    const BodyState& s = states[i];
+    std::int32_t slot = slot_of(s.id);
+    const bool fresh = slot < 0;
+    if (fresh) {
+      const auto free =
+          std::find_if(tracked_.begin(), tracked_.end(), [](const Tracked& t) { return t.id < 0; });
+      slot = static_cast<std::int32_t>(free - tracked_.begin());
+      if (free == tracked_.end()) {
+        tracked_.emplace_back();
+        field_.bodies.emplace_back();
+      }
+      slots_[s.id] = slot;
+    }
+    order.push_back(slot);
+    Tracked& t = tracked_[static_cast<std::size_t>(slot)];
+    Tracked next;
+    next.id = s.id;
+    next.shape = s.shape;
+    set_pose(next, s);
+
+    std::vector<BandCell> band;
+    next_epoch();
+    if (fresh || mode == UpdateMode::full) {
+      t = std::move(next);
+      scan(slot, band, stats);
+    } else if (t.shape != s.shape || displacement(t, next) > kMaxIncrementalMove) {
+      remove(slot, stats);
+      t = std::move(next);
+      scan(slot, band, stats);
+    } else {
+      next.band = std::move(t.band);
+      t = std::move(next);
+      follow_band(slot, band, stats);
+    }
+    t.band = std::move(band);
+    stats.band += t.band.size();
+
+    PorousBody<T>& k = field_.bodies[static_cast<std::size_t>(slot)];
+    for (int a = 0; a < 3; ++a) {
+      k.centre[a] = T(t.x[a]);
+      k.velocity[a] = T(s.v[a] / frame_.units.velocity());
+      k.omega[a] = T(s.w[a] * frame_.units.dt);
+    }
+  }
+  combine(order);
+  field_.active = !slots_.empty();
+  return stats;
+}
+
+template class BodyField<double>;
+template class BodyField<float>;
+
+}  // namespace lbdem::hlbm

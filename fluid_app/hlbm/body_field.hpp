@@ -1,0 +1,151 @@
+#pragma once
+// The fluid side of the bodies (homogenized LBM): turns the body states the coupler
+// delivers into the porosity field and body table the HLBM collision reads, keeping the
+// update cost proportional to the body surfaces, and integrates the hydrodynamic force and
+// torque on each body by momentum exchange (paper, appendix "Fluid-Structure Interaction").
+// See docs/hlbm.md for the method and the conventions.
+//
+// Use (one per fluid rank):
+//   hlbm::BodyField<T> bodies(shapes, {solver.box(), periodic}, {origin, units},
+//                             solver.porous());
+//   each step: bodies.update(states);  solver.step();
+//              auto loads = bodies.momentum_exchange(
+//                  [&](int i, CellIndex c) { return solver.population(i, c); }, step);
+#include <Eigen/Dense>
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <unordered_map>
+#include <vector>
+
+#include "coupler_lib/comm/packets.hpp"
+#include "coupler_lib/scene/units.hpp"
+#include "coupler_lib/shapes/shape.hpp"
+#include "fluid_app/hlbm/momentum_exchange.hpp"
+#include "fluid_app/hlbm/reference_porosity.hpp"
+#include "fluid_app/hlbm/subdomain.hpp"
+#include "fluid_app/porous_field.hpp"
+
+namespace lbdem::hlbm {
+
+// Where the lattice sits in space and how lattice units map to SI.
+struct LatticeFrame {
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();  // SI position of the domain's lower corner
+  UnitConverter units;
+};
+
+enum class UpdateMode {
+  incremental,  // revisit only the porous band of each body (cost ~ surface)
+  full,         // recompute every cell covered by any body from scratch (cost ~ volume)
+};
+
+// What one update did, for cost measurements and diagnostics.
+struct UpdateStats {
+  std::size_t evaluated = 0;           // porosity evaluations (mapped lookups)
+  std::size_t band = 0;                // cells with 0 < d_k < 1, summed over bodies
+  std::size_t full_scans = 0;          // support scans (body new, jumped > 1 cell, or removed)
+  std::size_t interior_conflicts = 0;  // cells inside two bodies (overlap deeper than the band)
+};
+
+template <class T>
+class BodyField {
+ public:
+  // shapes: the scene's catalogue (BodyState::shape indexes it). field: the arrays the
+  // kernel reads (FluidSolver::porous()); they are (re)sized to the box and owned by the
+  // caller, who must not write them while this object lives.
+  BodyField(std::span<const Shape> shapes, const Subdomain& sub, const LatticeFrame& frame,
+            PorousField<T>& field);
+
+  // Embeds the bodies at their new poses. `states` holds every body that can touch this
+  // rank's box, each once, any order; bodies absent from it are taken out of the field.
+  // Sets field().active while any body is present.
+  UpdateStats update(std::span<const BodyState> states, UpdateMode mode = UpdateMode::incremental);
+
+  const PorousField<T>& field() const { return field_; }
+  const Subdomain& subdomain() const { return sub_; }
+
+  // Body index in field().body / field().bodies of a body id, -1 if not present.
+  std::int32_t slot_of(std::int64_t id) const;
+  // Porosity d_k of one body alone at a local cell (what the two-body rule combines).
+  float body_porosity(std::int64_t id, CellIndex cell) const;
+
+  // Partial hydrodynamic force and torque (SI; torque about the centre of mass) on every
+  // body of the last update, summed over the boundary links of the cells this rank owns.
+  // f(i, cell): post-stream population i at local cell `cell` (FluidSolver::population).
+  template <class Populations>
+  std::vector<BodyLoad> momentum_exchange(const Populations& f, std::int64_t step) const;
+
+ private:
+  struct BandCell {
+    std::uint32_t cell;
+    float d;
+  };
+  struct Tracked {
+    std::int64_t id = -1;  // -1: free slot
+    std::int32_t shape = 0;
+    Eigen::Vector3d x = Eigen::Vector3d::Zero();           // centre, lattice coordinates
+    Eigen::Matrix3d rot = Eigen::Matrix3d::Identity();     // shape frame -> space frame
+    Eigen::Matrix3d to_ref = Eigen::Matrix3d::Identity();  // rot^T dx / h
+    std::vector<BandCell> band;                            // cells with 0 < d < 1
+  };
+
+  std::vector<ReferencePorosity> shapes_;
+  Subdomain sub_;
+  LatticeFrame frame_;
+  PorousField<T>& field_;
+  std::vector<std::int32_t> inside_;  // per cell: body whose interior (d = 0) covers it
+  std::vector<std::uint32_t> mark_;   // per cell: epoch of its last evaluation
+  std::uint32_t epoch_ = 0;
+  std::vector<Tracked> tracked_;  // by slot
+  std::unordered_map<std::int64_t, std::int32_t> slots_;
+  std::vector<std::uint32_t> touched_;  // cells evaluated in this update
+  std::vector<std::uint32_t> queue_;    // band search work list
+
+  void next_epoch();
+  void set_pose(Tracked& t, const BodyState& s) const;
+  float porosity(const Tracked& t, std::uint32_t cell) const;
+  float evaluate(std::int32_t slot, std::uint32_t cell, std::vector<BandCell>& band,
+                 UpdateStats& stats);
+  std::array<std::vector<int>, 3> support(const Tracked& t) const;
+  void scan(std::int32_t slot, std::vector<BandCell>& band, UpdateStats& stats);
+  void remove(std::int32_t slot, UpdateStats& stats);
+  void follow_band(std::int32_t slot, std::vector<BandCell>& band, UpdateStats& stats);
+  void combine(std::span<const std::int32_t> order);
+  double displacement(const Tracked& t, const Tracked& next) const;
+  int local_images(int axis, long global, std::array<int, 3>& out) const;
+};
+
+template <class T>
+template <class Populations>
+std::vector<BodyLoad> BodyField<T>::momentum_exchange(const Populations& f,
+                                                      std::int64_t step) const {
+  std::vector<BodyLoad> loads;
+  for (std::size_t s = 0; s < tracked_.size(); ++s) {
+    const Tracked& t = tracked_[s];
+    if (t.id < 0) continue;
+    const auto slot = static_cast<std::int32_t>(s);
+    // Interior cells (d = 0) never neighbour a d = 1 cell (the smoothing is wider than a
+    // link, see docs/hlbm.md), so the body's band holds all its boundary links.
+    LinkLoad sum;
+    for (const BandCell& b : t.band) {
+      const auto l = sub_.box.coords(b.cell);
+      if (field_.body[b.cell] == slot && sub_.box.interior(l[0], l[1], l[2]))
+        sum += link_load(sub_, field_, slot, CellIndex(b.cell), f);
+    }
+    BodyLoad load;
+    load.id = t.id;
+    load.step = step;
+    for (int a = 0; a < 3; ++a) {
+      load.f[a] = sum.force[a] * frame_.units.force();
+      load.t[a] = sum.torque[a] * frame_.units.torque();
+    }
+    loads.push_back(load);
+  }
+  return loads;
+}
+
+extern template class BodyField<double>;
+extern template class BodyField<float>;
+
+}  // namespace lbdem::hlbm

@@ -1,0 +1,82 @@
+#include "fluid_app/hlbm/reference_porosity.hpp"
+
+#include "fluid_app/lattice/d3q19.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace lbdem::hlbm {
+
+namespace {
+
+double lerp(double a, double b, double t) {
+  return a + t * (b - a);
+}
+
+}  // namespace
+
+ReferencePorosity::ReferencePorosity(const Voxels& voxels) : h_(voxels.h) {
+  const auto& n = voxels.n;
+  if (!(h_ > 0) || n[0] < 1 || n[1] < 1 || n[2] < 1 ||
+      voxels.solid.size() != static_cast<std::size_t>(n[0]) * n[1] * n[2])
+    throw std::invalid_argument(
+        "reference porosity: empty or inconsistent voxel lattice (h=" + std::to_string(h_) + ")");
+  for (int a = 0; a < 3; ++a) m_[a] = n[a] + 2 * kPad;
+  shift_ = -voxels.origin / h_ + Eigen::Vector3d::Constant(kPad);
+
+  auto solid = [&](int i, int j, int k) {
+    if (i < 0 || j < 0 || k < 0 || i >= n[0] || j >= n[1] || k >= n[2]) return false;
+    return voxels.solid[static_cast<std::size_t>(i) +
+                        static_cast<std::size_t>(n[0]) * (static_cast<std::size_t>(j) +
+                                                          static_cast<std::size_t>(n[1]) * k)] != 0;
+  };
+
+  smooth_.assign(static_cast<std::size_t>(m_[0]) * m_[1] * m_[2], 1.0f);
+  std::size_t idx = 0;
+  for (int k = 0; k < m_[2]; ++k)
+    for (int j = 0; j < m_[1]; ++j)
+      for (int i = 0; i < m_[0]; ++i, ++idx) {
+        int fluid = 0;
+        for (const auto& c : d3q19::c)
+          fluid += solid(i - kPad + c[0], j - kPad + c[1], k - kPad + c[2]) ? 0 : 1;
+        // fluid / 19 is exactly 1 (or 0) when all 19 points agree.
+        smooth_[idx] = static_cast<float>(fluid) / 19.0f;
+      }
+
+  for (int k = 0; k < n[2]; ++k)
+    for (int j = 0; j < n[1]; ++j)
+      for (int i = 0; i < n[0]; ++i) {
+        if (!solid(i, j, k)) continue;
+        const Eigen::Vector3d p = voxels.origin + h_ * Eigen::Vector3d(i, j, k);
+        // The smoothed porosity is < 1 up to two reference cells (face + trilinear) beyond
+        // a solid voxel centre along any axis.
+        support_radius_ = std::max(support_radius_, p.norm() + 2.0 * std::sqrt(3.0) * h_);
+        constexpr int kFaces[6][3] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                      {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
+        for (const auto& f : kFaces)
+          if (!solid(i + f[0], j + f[1], k + f[2])) {
+            surface_.push_back(p);
+            break;
+          }
+      }
+}
+
+double ReferencePorosity::at(const Eigen::Vector3d& ref) const {
+  const double fx = std::floor(ref.x()), fy = std::floor(ref.y()), fz = std::floor(ref.z());
+  // Outside the padded lattice everything is fluid; the outer layer of the padded lattice
+  // is 1 as well, so the field is continuous across its edge.
+  if (!(fx >= 0 && fy >= 0 && fz >= 0 && fx < m_[0] - 1 && fy < m_[1] - 1 && fz < m_[2] - 1))
+    return 1.0;
+  const int i = static_cast<int>(fx), j = static_cast<int>(fy), k = static_cast<int>(fz);
+  const double tx = ref.x() - fx, ty = ref.y() - fy, tz = ref.z() - fz;
+  // Nested lerps (not a weighted sum): equal corners give exactly that value.
+  const double c00 = lerp(value(i, j, k), value(i + 1, j, k), tx);
+  const double c10 = lerp(value(i, j + 1, k), value(i + 1, j + 1, k), tx);
+  const double c01 = lerp(value(i, j, k + 1), value(i + 1, j, k + 1), tx);
+  const double c11 = lerp(value(i, j + 1, k + 1), value(i + 1, j + 1, k + 1), tx);
+  return lerp(lerp(c00, c10, ty), lerp(c01, c11, ty), tz);
+}
+
+}  // namespace lbdem::hlbm
