@@ -125,6 +125,7 @@ FluidParams parse_fluid(Section& s) {
   const UnitConverter& u = p.units;
   if (p.tau < UnitLimits{}.min_tau) s.fail("tau", u.check());
   if (const std::string m = u.check(); !m.empty()) s.fail("characteristic_velocity", m);
+  p.output = parse_fluid_output(s, p.units, p.cells);
   s.finish();
   return p;
 }

@@ -22,6 +22,7 @@
 #include <array>
 #include <string>
 
+#include "coupler_lib/scene/fluid_output_section.hpp"
 #include "coupler_lib/scene/units.hpp"
 #include "coupler_lib/scene/yaml_reader.hpp"
 
@@ -60,6 +61,7 @@ struct FluidParams {
   MeanVelocityControl control;
   std::array<FaceBoundary, 6> faces{};  // default: triply periodic
   UnitConverter units;
+  FluidOutputParams output;  // fluid.output, fluid.stability, fluid.validation
 
   bool periodic(int axis) const { return faces[2 * axis].type == FaceType::periodic; }
 };
