@@ -1,5 +1,6 @@
 #include "coupler_lib/shapes/build_shape.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 #include "coupler_lib/shapes/clump_generator.hpp"
@@ -26,8 +27,20 @@ constexpr double kCellsAcrossWithoutFluid = 40;
 constexpr int kVoxelPad = 2;
 
 // A clump file this far off the shape is almost surely at the wrong scale or for another
-// shape: more mismatched volume than the shape itself.
-constexpr double kMaxFileClumpVolumeError = 1.0;
+// shape: a single inscribed sphere in a cube misses 48 % of it, a clump at a tenth of the
+// scale misses 99.9 %.
+constexpr double kMaxFileClumpVolumeError = 0.8;
+
+// Fewer solid voxels than this cannot give a meaningful volume or inertia.
+constexpr std::size_t kMinSolidVoxels = 8;
+
+// Largest distance from the centroid that any clump sphere reaches.
+double clump_reach(const Clump& c, const Eigen::Vector3d& center) {
+  double r = 0;
+  for (std::size_t i = 0; i < c.size(); ++i)
+    r = std::max(r, (c.centers[i] - center).norm() + c.radii[i]);
+  return r;
+}
 
 }  // namespace
 
@@ -64,11 +77,11 @@ Shape build_shape(const ShapeParams& p, double h) {
   }();
   Voxels vox = voxelize(solid, h, kVoxelPad);
   shape.mass = mass_properties(vox);
-  if (shape.mass.volume == 0) {
+  if (vox.count() < kMinSolidVoxels) {
     std::ostringstream s;
-    s << p.where << ": shape '" << p.name << "': no voxel centre lies inside the shape at voxel "
-      << "spacing " << h << " m; the spacing must be well below the shape size (" << p.size
-      << " m)";
+    s << p.where << ": shape '" << p.name << "': only " << vox.count()
+      << " voxel centres lie inside the shape at voxel spacing " << h
+      << " m; the spacing must be well below the shape size (" << p.size << " m)";
     throw ShapeError(s.str());
   }
   const Eigen::Vector3d c = shape.mass.centroid;
@@ -97,11 +110,19 @@ Shape build_shape(const ShapeParams& p, double h) {
     throw ShapeError(p.where + ": shape '" + p.name + "': clump: " + e.what());
   }
   shape.clump_quality = clump_quality(clump, vox);
-  if (cp.source == "file" && shape.clump_quality.volume_error > kMaxFileClumpVolumeError) {
+  const double reach = clump_reach(clump, c);
+  const bool too_big = reach > 1.1 * shape.bounding_radius + 2 * h;
+  if (cp.source == "file" &&
+      (too_big || shape.clump_quality.volume_error > kMaxFileClumpVolumeError)) {
     std::ostringstream s;
     s << p.where << ": shape '" << p.name << "': clump file " << cp.file
-      << " does not fit the shape: the mismatched volume is " << shape.clump_quality.volume_error
-      << " times the shape volume; check clump.scale (now " << cp.scale << ")";
+      << " does not fit the shape: ";
+    if (too_big)
+      s << "its spheres reach " << reach << " m from the centroid, the shape only "
+        << shape.bounding_radius << " m";
+    else
+      s << "it misses " << shape.clump_quality.volume_error << " of the shape volume";
+    s << "; check clump.scale (now " << cp.scale << ")";
     throw ShapeError(s.str());
   }
   shape.clump = translated(std::move(clump), c);
