@@ -12,7 +12,7 @@ namespace lbdem {
 
 LocalScan scan_block(const MacroFields& f, double max_mach) {
   LocalScan s;
-  const LocalBox& b = f.box;
+  const FieldBlock& b = f.box;
   // Global x-fastest order of the nodes, so "first" means the same on any decomposition.
   auto global_order = [&](int i, int j, int k) {
     return (static_cast<long long>(k + b.lo[2]) * b.global[1] + (j + b.lo[1])) * b.global[0] +
@@ -62,7 +62,7 @@ namespace {
 
 // The node every rank reports: largest Mach for Mach trouble, else the first node in global
 // order. Ties between ranks go to the lowest rank (MPI_MAXLOC / MPI_MINLOC).
-int reporting_rank(const LocalScan& s, Instability kind, const LocalBox& b, MPI_Comm comm) {
+int reporting_rank(const LocalScan& s, Instability kind, const FieldBlock& b, MPI_Comm comm) {
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
   struct {

@@ -30,7 +30,7 @@ std::vector<T> gather_local(const FieldView& view, const LocalSelection& sel, co
   const int comps = q == Quantity::velocity ? 3 : 1;
   std::vector<T> out;
   out.reserve(static_cast<std::size_t>(sel.samples()) * comps);
-  const LocalBox& b = f.box;
+  const FieldBlock& b = f.box;
   for (int mk = sel.first[2]; mk < sel.first[2] + sel.count[2]; ++mk) {
     const int k = view.axes[2].start + mk * view.axes[2].stride - b.lo[2];
     for (int mj = sel.first[1]; mj < sel.first[1] + sel.count[1]; ++mj) {

@@ -31,7 +31,7 @@ std::vector<FieldView> views_for(const FieldOutputParams& p, const std::array<in
   return out;
 }
 
-LocalSelection local_selection(const FieldView& view, const LocalBox& box) {
+LocalSelection local_selection(const FieldView& view, const FieldBlock& box) {
   LocalSelection sel;
   for (int d = 0; d < 3; ++d) {
     const AxisSampling& a = view.axes[d];

@@ -41,6 +41,6 @@ struct LocalSelection {
   long long samples() const { return static_cast<long long>(count[0]) * count[1] * count[2]; }
 };
 
-LocalSelection local_selection(const FieldView& view, const LocalBox& box);
+LocalSelection local_selection(const FieldView& view, const FieldBlock& box);
 
 }  // namespace lbdem

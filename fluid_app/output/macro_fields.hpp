@@ -11,7 +11,7 @@ namespace lbdem {
 
 // Which part of the global lattice a rank owns: nodes [lo, lo + n) of a global box of
 // `global` nodes. Node (i, j, k) sits at the cell centre ((i, j, k) + 1/2) dx.
-struct LocalBox {
+struct FieldBlock {
   std::array<int, 3> global{};
   std::array<int, 3> lo{};
   std::array<int, 3> n{};
@@ -27,11 +27,11 @@ struct LocalBox {
 };
 
 struct MacroFields {
-  LocalBox box;
+  FieldBlock box;
   std::vector<double> rho;  // one per node, lattice density (rest state 1)
   std::vector<double> u;    // three per node (ux, uy, uz interleaved), lattice velocity
 
-  void resize(const LocalBox& b) {
+  void resize(const FieldBlock& b) {
     box = b;
     rho.resize(b.cells());
     u.resize(3 * b.cells());

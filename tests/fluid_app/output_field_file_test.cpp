@@ -16,7 +16,7 @@ UnitConverter test_units() {
 // every sample with the SI conversion of the synthetic state.
 TEST(FieldFile, RoundTripOfStridedVolumeAndSliceInSiUnits) {
   test::ScratchDir dir("lbdem_field_file");
-  LocalBox box{{7, 5, 4}, {0, 0, 0}, {7, 5, 4}};
+  FieldBlock box{{7, 5, 4}, {0, 0, 0}, {7, 5, 4}};
   const MacroFields f = test::test_fields(box);
   const UnitConverter units = test_units();
   FieldSlice slice;
@@ -55,7 +55,7 @@ TEST(FieldFile, RoundTripOfStridedVolumeAndSliceInSiUnits) {
 
 TEST(FieldFile, FloatFilesHoldOnlyTheRequestedQuantities) {
   test::ScratchDir dir("lbdem_field_file_float");
-  LocalBox box{{3, 3, 3}, {0, 0, 0}, {3, 3, 3}};
+  FieldBlock box{{3, 3, 3}, {0, 0, 0}, {3, 3, 3}};
   const MacroFields f = test::test_fields(box);
   const std::string file = dir.file("f.h5");
   write_field_file(file, MPI_COMM_SELF, {volume_view(box.global, 1)}, {false, false, true, false},

@@ -41,7 +41,7 @@ TEST(FieldView, BlocksOfAnUnevenSplitCoverEverySampleOnce) {
     for (std::size_t a = 0; a + 1 < cuts[0].size(); ++a)
       for (std::size_t b = 0; b + 1 < cuts[1].size(); ++b)
         for (std::size_t c = 0; c + 1 < cuts[2].size(); ++c) {
-          LocalBox box;
+          FieldBlock box;
           box.global = global;
           box.lo = {cuts[0][a], cuts[1][b], cuts[2][c]};
           box.n = {cuts[0][a + 1] - cuts[0][a], cuts[1][b + 1] - cuts[1][b],

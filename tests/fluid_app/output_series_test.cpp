@@ -12,7 +12,7 @@ namespace {
 
 TEST(DomainMeans, SiMeansEnergyAndMachOfAKnownState) {
   const UnitConverter units = UnitConverter::from_tau(0.01, 0.8, 1e-3, 1000.0);
-  LocalBox box{{2, 1, 1}, {0, 0, 0}, {2, 1, 1}};
+  FieldBlock box{{2, 1, 1}, {0, 0, 0}, {2, 1, 1}};
   MacroFields f;
   f.resize(box);
   f.rho = {1.0, 1.2};

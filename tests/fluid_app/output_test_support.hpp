@@ -60,7 +60,7 @@ inline double test_u(int i, int j, int k, int d) {
   return 1e-3 * (d + 1) + 1e-4 * i - 2e-6 * j + 3e-8 * k;
 }
 
-inline MacroFields test_fields(const LocalBox& box) {
+inline MacroFields test_fields(const FieldBlock& box) {
   MacroFields f;
   f.resize(box);
   for (int k = 0; k < box.n[2]; ++k)

@@ -12,7 +12,7 @@ namespace {
 
 const UnitConverter kUnits = UnitConverter::from_tau(0.001, 0.6, 1e-6, 1000.0);
 
-MacroFields calm(const LocalBox& box) {
+MacroFields calm(const FieldBlock& box) {
   MacroFields f;
   f.resize(box);
   std::fill(f.rho.begin(), f.rho.end(), 1.0);
@@ -21,7 +21,7 @@ MacroFields calm(const LocalBox& box) {
 }
 
 TEST(StabilityScan, WorstKindWinsAndFirstNodeIsInGlobalOrder) {
-  LocalBox box{{8, 8, 8}, {2, 0, 4}, {4, 3, 2}};
+  FieldBlock box{{8, 8, 8}, {2, 0, 4}, {4, 3, 2}};
   MacroFields f = calm(box);
   f.u[3 * box.index(3, 2, 1)] = 0.5;  // Mach 0.87
   f.rho[box.index(1, 1, 1)] = -0.1;
@@ -39,7 +39,7 @@ TEST(StabilityScan, WorstKindWinsAndFirstNodeIsInGlobalOrder) {
 }
 
 TEST(StabilityScan, MachReportsTheFastestNode) {
-  LocalBox box{{4, 4, 4}, {0, 0, 0}, {4, 4, 4}};
+  FieldBlock box{{4, 4, 4}, {0, 0, 0}, {4, 4, 4}};
   MacroFields f = calm(box);
   f.u[3 * box.index(1, 0, 0)] = 0.2;
   f.u[3 * box.index(3, 3, 3) + 1] = -0.25;
@@ -77,7 +77,7 @@ TEST(StabilityWatch, FailingCheckWritesTheLastGoodState) {
   StabilityWatch w(p, kUnits, MPI_COMM_SELF, lg);
   EXPECT_TRUE(w.due(20));
   EXPECT_FALSE(w.due(25));
-  LocalBox box{{3, 2, 2}, {0, 0, 0}, {3, 2, 2}};
+  FieldBlock box{{3, 2, 2}, {0, 0, 0}, {3, 2, 2}};
   MacroFields f = calm(box);
   EXPECT_FALSE(w.check(10, 0.1, f));
   f.rho[box.index(2, 1, 0)] = 1.25;  // still fine: becomes the last good state
