@@ -17,9 +17,12 @@ std::size_t mark_sphere(const Voxels& lattice, const Eigen::Vector3d& c, double 
                         std::vector<std::uint8_t>& mark) {
   std::array<int, 3> lo{}, hi{};
   for (int d = 0; d < 3; ++d) {
-    lo[d] = std::max(0, static_cast<int>(std::ceil((c[d] - r - lattice.origin[d]) / lattice.h)));
-    hi[d] = std::min(lattice.n[d] - 1,
-                     static_cast<int>(std::floor((c[d] + r - lattice.origin[d]) / lattice.h)));
+    // Clamp in floating point first: a sphere far off the lattice must not overflow int.
+    const double top = lattice.n[d] - 1;
+    lo[d] = static_cast<int>(
+        std::clamp(std::ceil((c[d] - r - lattice.origin[d]) / lattice.h), 0.0, top + 1));
+    hi[d] = static_cast<int>(
+        std::clamp(std::floor((c[d] + r - lattice.origin[d]) / lattice.h), -1.0, top));
   }
   std::size_t fresh = 0;
   const double r2 = r * r;

@@ -1,6 +1,7 @@
 #include "coupler_lib/shapes/voxelize.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 
@@ -19,17 +20,20 @@ Voxels empty_lattice(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, doubl
   v.h = h;
   const Eigen::Vector3d c = 0.5 * (lo + hi);
   double total = 1;
+  std::array<double, 3> across{};
   for (int d = 0; d < 3; ++d) {
-    const int inner = std::max(1, static_cast<int>(std::ceil((hi[d] - lo[d]) / h - 1e-9)));
-    v.n[d] = inner + 2 * pad;
-    v.origin[d] = c[d] - 0.5 * (v.n[d] - 1) * h;
-    total *= v.n[d];
+    across[d] = std::max(1.0, std::ceil((hi[d] - lo[d]) / h - 1e-9)) + 2 * pad;
+    total *= across[d];
   }
   if (total > 2e9) {
     std::ostringstream s;
-    s << "voxel spacing " << h << " gives " << v.n[0] << " x " << v.n[1] << " x " << v.n[2]
+    s << "voxel spacing " << h << " gives " << across[0] << " x " << across[1] << " x " << across[2]
       << " voxels, too many; use a larger spacing";
     throw ShapeError(s.str());
+  }
+  for (int d = 0; d < 3; ++d) {
+    v.n[d] = static_cast<int>(across[d]);
+    v.origin[d] = c[d] - 0.5 * (v.n[d] - 1) * h;
   }
   v.solid.assign(static_cast<std::size_t>(total), 0);
   return v;

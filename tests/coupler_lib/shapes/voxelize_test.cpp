@@ -193,7 +193,7 @@ TEST(MassProperties, PrincipalAxesOfARotatedCuboid) {
   for (int d = 0; d < 3; ++d) {
     EXPECT_NEAR(m.principal_moments[d], expect[d], 0.03 * expect[d]);
     const double c = std::abs(m.principal_axes.col(d).dot(R.col(d)));
-    std::printf("  axis %d: |cos| to the true axis = %.6f\n", d, c);
+    std::printf("  axis %d: 1 - |cos| to the true axis = %.1e\n", d, 1 - c);
     EXPECT_GT(c, 0.999);
   }
   EXPECT_NEAR(m.principal_axes.determinant(), 1.0, 1e-12);
