@@ -29,6 +29,8 @@ std::string existing_file(Section& s, std::string_view key, std::string_view doc
 ClumpParams parse_clump(Section& c) {
   ClumpParams p;
   if (c.has("file")) {
+    if (c.has("method"))
+      c.fail("method", "give either 'file' (a clump file) or 'method' (generate), not both");
     p.source = "file";
     p.file = existing_file(c, "file", "clump file, one sphere 'x y z r' per line");
     p.scale =

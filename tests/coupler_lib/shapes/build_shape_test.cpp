@@ -77,6 +77,10 @@ TEST(ShapesSection, ErrorsNameTheKeyAndWhatWasExpected) {
                         "spheres: 3, methd: x}}]")
                 .find("did you mean 'method'"),
             std::string::npos);
+  EXPECT_NE(parse_error("shapes: [{name: a, kind: cube, edge: 1, clump: {file: "
+                        "shapes/cube_27_fill.clump, method: fill}}]")
+                .find("not both"),
+            std::string::npos);
   EXPECT_NE(parse_error("shapes: [{name: a, kind: cube, edge: -1}]").find("> 0"),
             std::string::npos);
   EXPECT_NE(parse_error("shapes: [{name: a, kind: cube, edge: 1}, {name: a, kind: cube, edge: 2}]")
