@@ -1,5 +1,6 @@
 #include "coupler_lib/app/run_app.hpp"
 
+#include <climits>
 #include <cstdio>
 #include <iostream>
 
@@ -25,6 +26,39 @@ void appnum(int& mine, int& count) {
   std::abort();
 }
 
+// What start-up decided on one rank; the job goes on only if every rank says `run`.
+enum class Start { run = 0, stop = 1, fail = 2 };
+
+struct StartOutcome {
+  Start start = Start::run;
+  std::string error;
+  bool show_usage = false;
+};
+
+StartOutcome start_up(AppContext& ctx, int argc, char** argv) {
+  StartOutcome out;
+  try {
+    std::vector<std::string> args(argv + 1, argv + argc);
+    ctx.cli = parse_command_line(args);
+  } catch (const std::invalid_argument& e) {
+    return {Start::fail, e.what(), true};
+  }
+  if (ctx.cli.help || ctx.cli.version) return {Start::stop, "", false};
+  try {
+    ctx.scene = load_scene(ctx.cli.scene);
+  } catch (const std::exception& e) {
+    return {Start::fail, e.what(), false};
+  }
+  if (!ctx.scene.coupled() && ctx.app_count > 1)
+    return {Start::fail,
+            ctx.cli.scene + ": the scene is not coupled (coupling needs 'fluid', 'dem' and " +
+                "'bodies'), but the launch started " + std::to_string(ctx.app_count) +
+                " programs; run the one program it needs alone, e.g. mpirun -np N " +
+                (ctx.scene.fluid ? "fluid_app " : "dem_app ") + ctx.cli.scene,
+            false};
+  return out;
+}
+
 }  // namespace
 
 int run_app(int argc, char** argv, const AppInfo& info,
@@ -34,46 +68,38 @@ int run_app(int argc, char** argv, const AppInfo& info,
   AppContext ctx;
   ctx.info = info;
   MPI_Comm_rank(MPI_COMM_WORLD, &ctx.world_rank);
-  int app = 0;
-  appnum(app, ctx.app_count);
-  MPI_Comm_split(MPI_COMM_WORLD, app, ctx.world_rank, &ctx.side_comm);
+  appnum(ctx.app, ctx.app_count);
+  MPI_Comm_split(MPI_COMM_WORLD, ctx.app, ctx.world_rank, &ctx.side_comm);
   MPI_Comm_rank(ctx.side_comm, &ctx.rank);
   MPI_Comm_size(ctx.side_comm, &ctx.size);
   const std::string who = info.side + " " + std::to_string(ctx.rank);
 
-  // Errors every rank sees alike: report once, finalize collectively, exit 1.
-  auto collective_failure = [&](const std::string& msg, bool show_usage) {
-    if (ctx.world_rank == 0) {
-      std::fprintf(stderr, "%s: error: %s\n", info.program.c_str(), msg.c_str());
-      if (show_usage) std::fprintf(stderr, "%s", usage(info.program, info.description).c_str());
-      std::fflush(stderr);
-    }
+  auto finish = [&](int rc) {
     MPI_Comm_free(&ctx.side_comm);
     MPI_Finalize();
-    return 1;
+    return rc;
   };
 
-  try {
-    std::vector<std::string> args(argv + 1, argv + argc);
-    ctx.cli = parse_command_line(args);
-  } catch (const std::invalid_argument& e) {
-    return collective_failure(e.what(), true);
-  }
-  if (ctx.cli.help || ctx.cli.version) {
-    if (ctx.world_rank == 0) {
-      if (ctx.cli.help)
-        std::cout << usage(info.program, info.description);
-      else
-        std::cout << info.program << " " << LBDEM_VERSION << "\n";
+  // Both binaries agree on the outcome of start-up, so a bad command line or scene on one
+  // side cannot leave the other side waiting at the handshake.
+  const StartOutcome outcome = start_up(ctx, argc, argv);
+  int mine = static_cast<int>(outcome.start), worst = 0;
+  MPI_Allreduce(&mine, &worst, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  if (worst == static_cast<int>(Start::fail)) {
+    int me = outcome.start == Start::fail ? ctx.world_rank : INT_MAX, first = 0;
+    MPI_Allreduce(&me, &first, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+    if (ctx.world_rank == first) {
+      std::fprintf(stderr, "%s: error: %s\n", info.program.c_str(), outcome.error.c_str());
+      if (outcome.show_usage)
+        std::fprintf(stderr, "%s", usage(info.program, info.description).c_str());
+      std::fflush(stderr);
     }
-    MPI_Comm_free(&ctx.side_comm);
-    MPI_Finalize();
-    return 0;
+    return finish(1);
   }
-  try {
-    ctx.scene = load_scene(ctx.cli.scene);
-  } catch (const SceneError& e) {
-    return collective_failure(e.what(), false);
+  if (worst == static_cast<int>(Start::stop)) {
+    if (ctx.rank == 0 && ctx.cli.help) std::cout << usage(info.program, info.description);
+    if (ctx.rank == 0 && ctx.cli.version) std::cout << info.program << " " << LBDEM_VERSION << "\n";
+    return finish(0);
   }
   const std::string level = ctx.cli.log_level.empty() ? ctx.scene.log_level : ctx.cli.log_level;
   ctx.log = make_logger(info.side, ctx.rank, level);
@@ -85,19 +111,28 @@ int run_app(int argc, char** argv, const AppInfo& info,
     } else {
       rc = run(ctx);
     }
+  } catch (const JobError& e) {
+    // Every rank of both binaries threw the same: print once, end together.
+    if (ctx.world_rank == 0) {
+      std::fprintf(stderr, "%s: error: %s\n", info.program.c_str(), e.what());
+      std::fflush(stderr);
+    }
+    return finish(1);
+  } catch (const SideError& e) {
+    if (ctx.rank == 0) abort_all(who, e.what());
+    // Let rank 0 print before the job is torn down.
+    MPI_Barrier(ctx.side_comm);
+    MPI_Abort(MPI_COMM_WORLD, 1);
   } catch (const SceneError& e) {
     // Side-specific validation: detected by all ranks of this side.
     if (ctx.rank == 0) abort_all(who, e.what());
-    // Let rank 0 print before the job is torn down.
     MPI_Barrier(ctx.side_comm);
     MPI_Abort(MPI_COMM_WORLD, 1);
   } catch (const std::exception& e) {
     abort_all(who, e.what());
   }
   ctx.log->flush();
-  MPI_Comm_free(&ctx.side_comm);
-  MPI_Finalize();
-  return rc;
+  return finish(rc);
 }
 
 }  // namespace lbdem

@@ -2,14 +2,22 @@
 // The common `main` of both binaries: MPI start-up, command line, scene loading, logging,
 // and the fail-fast policy.
 //
-// Fail-fast: a bad scene is detected identically on every rank of both binaries (they share
-// the parser), so every rank returns 1 after a collective MPI_Finalize and the message is
-// printed once (by world rank 0). Any other error is local to a rank: that rank prints it
-// and calls MPI_Abort on MPI_COMM_WORLD, which ends both binaries within seconds.
+// Fail-fast, so that a coupled job never hangs and prints each message once:
+// * command line and scene errors: every rank of both binaries agrees on the outcome
+//   (one reduction over MPI_COMM_WORLD) before any coupling starts; the first failing rank
+//   prints its message, every rank finalizes and exits 1;
+// * JobError (thrown identically on every rank of both binaries, e.g. by the handshake):
+//   world rank 0 prints it, every rank finalizes and exits 1;
+// * SideError / SceneError thrown from `run` (every rank of one binary sees it): that
+//   binary's rank 0 prints it and calls MPI_Abort on MPI_COMM_WORLD;
+// * any other exception is local to a rank: that rank prints it and calls MPI_Abort on
+//   MPI_COMM_WORLD, which ends both binaries within seconds. A process that exits without
+//   MPI_Finalize (a crash) makes mpirun end the whole job as well.
 #include <mpi.h>
 
 #include <functional>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include "coupler_lib/app/command_line.hpp"
@@ -32,8 +40,21 @@ struct AppContext {
   int rank = 0;                        // rank within side_comm
   int size = 1;
   int world_rank = 0;
+  int app = 0;        // this binary's index in the MPMD launch (MPI_APPNUM)
   int app_count = 1;  // number of applications in the MPMD launch
   std::shared_ptr<spdlog::logger> log;
+};
+
+// An error that every rank of both binaries detects identically (same message).
+class JobError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// An error that every rank of one binary detects identically.
+class SideError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 // `check` prints derived parameters for --check; `run` does the work. Both may throw.

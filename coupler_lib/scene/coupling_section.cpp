@@ -6,6 +6,18 @@ CouplingParams parse_coupling(Section& s) {
   CouplingParams p;
   p.record = s.get<std::string>("record", "", "HDF5 file that records every packet");
   p.margin = s.get<double>("margin", 2.0, "stencil margin in fluid cells", Bounds::non_negative());
+  p.exchange_interval = s.get<int>("exchange_interval", 1, "fluid steps between packet exchanges",
+                                   Bounds::at_least(1));
+  p.output_interval = s.get<double>("output_interval", 0.0, "simulated s between outputs (0: none)",
+                                    Bounds::non_negative());
+  p.checkpoint_interval =
+      s.get<double>("checkpoint_interval", 0.0, "simulated s between checkpoints (0: none)",
+                    Bounds::non_negative());
+  p.handshake_timeout =
+      s.get<double>("handshake_timeout", 60.0, "wall s to wait for the other program at start",
+                    Bounds::positive());
+  p.wait = s.choice("wait", "backoff", {"backoff", "blocking"},
+                    "how a side waits for the other: backoff sleeps, blocking spins a core");
   s.finish();
   return p;
 }

@@ -1,5 +1,6 @@
 #pragma once
-// The `coupling:` section: what both sides agree on for exchanging packets.
+// The `coupling:` section: what both sides agree on for exchanging packets, and the cadence
+// of exchange, output and checkpoints (turned into fluid steps by make_schedule).
 #include <string>
 
 #include "coupler_lib/scene/yaml_reader.hpp"
@@ -7,8 +8,13 @@
 namespace lbdem {
 
 struct CouplingParams {
-  std::string record;   // HDF5 file recording every packet; empty = no recording
-  double margin = 2.0;  // stencil margin in fluid cells added to a body's bounding sphere
+  std::string record;          // HDF5 file recording every packet; empty = no recording
+  double margin = 2.0;         // stencil margin in fluid cells added to a body's bounding sphere
+  int exchange_interval = 1;   // outer (fluid) steps between two packet exchanges
+  double output_interval = 0;  // simulated s between outputs; 0 = no periodic output
+  double checkpoint_interval = 0;  // simulated s between checkpoints; 0 = no checkpoints
+  double handshake_timeout = 60;   // wall s a side waits for the other at the handshake
+  std::string wait = "backoff";    // how a waiting side waits: backoff (sleeps) | blocking (spins)
 };
 
 CouplingParams parse_coupling(Section& s);

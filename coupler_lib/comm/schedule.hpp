@@ -1,0 +1,45 @@
+#pragma once
+// The time schedule of a run, in one place: DEM substeps per fluid step, number of steps,
+// and which steps exchange packets, write output and write checkpoints.
+//
+// Substeps (paper, appendix "coupling"): the DEM advances n_DEM substeps of dt_DEM per fluid
+// step of dt_LBM with the hydrodynamic load held constant. n_DEM = ceil(dt_LBM / dt_DEM), and
+// the substep actually used is dt_LBM / n_DEM, so it never exceeds the DEM step asked for;
+// if dt_DEM >= dt_LBM the DEM uses dt_LBM (n_DEM = 1).
+//
+// The outer step is the fluid step when the scene has a fluid, else the DEM step. Outputs and
+// checkpoints fall on exchange steps, so both programs are at the same time when they write.
+#include <cstdint>
+
+#include "coupler_lib/scene/scene.hpp"
+
+namespace lbdem {
+
+struct Schedule {
+  double dt = 0;                         // outer step, s (fluid step, or DEM step when DEM-only)
+  double dt_dem = 0;                     // DEM substep actually used, s (0: no DEM)
+  int dem_substeps = 0;                  // n_DEM per outer step (0: no DEM)
+  std::int64_t steps = 0;                // outer steps to reach time.end
+  int exchange_interval = 1;             // outer steps between packet exchanges
+  std::int64_t output_interval = 0;      // outer steps between outputs (0: none)
+  std::int64_t checkpoint_interval = 0;  // outer steps between checkpoints (0: none)
+
+  // `step` counts completed outer steps (1 after the first step).
+  bool exchange_at(std::int64_t step) const { return step % exchange_interval == 0; }
+  bool output_at(std::int64_t step) const {
+    return output_interval > 0 && step % output_interval == 0;
+  }
+  bool checkpoint_at(std::int64_t step) const {
+    return checkpoint_interval > 0 && step % checkpoint_interval == 0;
+  }
+};
+
+// n_DEM for a fluid step `dt_fluid` and an asked DEM step `dt_dem` (both > 0).
+int dem_substeps(double dt_fluid, double dt_dem);
+
+// `dt_fluid`: the fluid step (scene.fluid->units.dt), ignored without a fluid; `dt_dem`: the
+// DEM step asked for (scene.dem->dt or the DEM's own estimate), ignored without a DEM.
+// Throws SceneError when a step is missing or non-positive.
+Schedule make_schedule(const Scene& scene, double dt_fluid, double dt_dem);
+
+}  // namespace lbdem

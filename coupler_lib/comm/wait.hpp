@@ -1,0 +1,28 @@
+#pragma once
+// Waiting for an MPI request without burning the core the other program needs.
+//
+// Open MPI's blocking calls (MPI_Wait, MPI_Barrier, ...) busy-poll: a fluid rank waiting for
+// the DEM would spin at 100 % on the very core the DEM rank computes on when both share a
+// node. `backoff` instead tests the request and sleeps between tests, starting at 50 us and
+// doubling up to 2 ms, so an idle side costs a few percent of a core and a message is noticed
+// at most ~2 ms late. `blocking` is the plain MPI_Wait, kept for comparison
+// (tools/coupler_idle_bench measures both).
+#include <mpi.h>
+
+#include <chrono>
+#include <string>
+
+namespace lbdem {
+
+enum class WaitMode { backoff, blocking };
+
+WaitMode wait_mode_from(const std::string& word);  // "backoff" | "blocking"
+
+// Completes `request` (it becomes MPI_REQUEST_NULL).
+void wait_request(MPI_Request& request, WaitMode mode);
+
+// Waits with back-off until `request` completes (true) or `deadline` passes (false; the
+// request stays pending).
+bool wait_request_until(MPI_Request& request, std::chrono::steady_clock::time_point deadline);
+
+}  // namespace lbdem
