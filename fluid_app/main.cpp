@@ -1,5 +1,6 @@
 // fluid_app: the lattice Boltzmann side of the co-simulation.
 #include "coupler_lib/app/run_app.hpp"
+#include "fluid_app/fluid_run.hpp"
 
 int main(int argc, char** argv) {
   const lbdem::AppInfo info{"fluid", "fluid_app",
@@ -10,9 +11,7 @@ int main(int argc, char** argv) {
         if (ctx.rank == 0)
           ctx.log->info("scene '{}' is valid:\n{}", ctx.scene.name,
                         lbdem::describe_resolved(ctx.scene));
+        if (ctx.scene.fluid) lbdem::log_fluid_setup(ctx, *ctx.scene.fluid);
       },
-      [](lbdem::AppContext& ctx) {
-        ctx.log->info("scene '{}' loaded", ctx.scene.name);
-        return 0;
-      });
+      [](lbdem::AppContext& ctx) { return lbdem::run_fluid_scene(ctx); });
 }

@@ -1,0 +1,76 @@
+#include "fluid_app/parallel/decomposition.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace lbdem {
+
+Extent block_extent(int n, int p, int r) {
+  const int base = n / p, extra = n % p;
+  return {base + (r < extra ? 1 : 0), r * base + (r < extra ? r : extra)};
+}
+
+Decomposition::Decomposition(MPI_Comm comm, std::array<int, 3> global, std::array<bool, 3> periodic,
+                             std::array<int, 3> dims)
+    : periodic_(periodic) {
+  int size = 1;
+  MPI_Comm_size(comm, &size);
+  // MPI_Dims_create orders its free factors non-increasingly; we want the big ones on z
+  // (the slowest axis), so let it fill a reversed copy.
+  std::array<int, 3> rev = {dims[2], dims[1], dims[0]};
+  if (MPI_Dims_create(size, 3, rev.data()) != MPI_SUCCESS)
+    throw std::runtime_error("MPI_Dims_create failed for " + std::to_string(size) + " ranks");
+  dims_ = {rev[2], rev[1], rev[0]};
+  for (int a = 0; a < 3; ++a)
+    if (dims_[a] > global[a])
+      throw std::runtime_error("cannot split " + std::to_string(global[a]) + " cells along axis " +
+                               std::to_string(a) + " over " + std::to_string(dims_[a]) +
+                               " ranks: use fewer ranks or a finer lattice");
+  const int periods[3] = {periodic[0], periodic[1], periodic[2]};
+  MPI_Cart_create(comm, 3, dims_.data(), periods, 0, &cart_);
+  MPI_Comm_rank(cart_, &rank_);
+  MPI_Comm_size(cart_, &size_);
+  MPI_Cart_coords(cart_, rank_, 3, coords_.data());
+  box_.global = global;
+  for (int a = 0; a < 3; ++a) {
+    const Extent e = block_extent(global[a], dims_[a], coords_[a]);
+    box_.n[a] = e.count;
+    box_.offset[a] = e.offset;
+  }
+  for (int ez = -1; ez <= 1; ++ez)
+    for (int ey = -1; ey <= 1; ++ey)
+      for (int ex = -1; ex <= 1; ++ex) {
+        const int e[3] = {ex, ey, ez};
+        int c[3];
+        bool exists = true;
+        for (int a = 0; a < 3; ++a) {
+          c[a] = coords_[a] + e[a];
+          if (c[a] < 0 || c[a] >= dims_[a]) {
+            if (!periodic_[a]) exists = false;
+            c[a] = (c[a] + dims_[a]) % dims_[a];
+          }
+        }
+        int r = MPI_PROC_NULL;
+        if (exists) MPI_Cart_rank(cart_, c, &r);
+        neighbour_[(ex + 1) + 3 * (ey + 1) + 9 * (ez + 1)] = r;
+      }
+}
+
+Decomposition::~Decomposition() {
+  int finalized = 0;
+  MPI_Finalized(&finalized);  // a solver outliving MPI must not take the program down
+  if (cart_ != MPI_COMM_NULL && !finalized) MPI_Comm_free(&cart_);
+}
+
+Decomposition::Decomposition(Decomposition&& o) noexcept
+    : cart_(std::exchange(o.cart_, MPI_COMM_NULL)),
+      rank_(o.rank_),
+      size_(o.size_),
+      dims_(o.dims_),
+      coords_(o.coords_),
+      periodic_(o.periodic_),
+      box_(o.box_),
+      neighbour_(o.neighbour_) {}
+
+}  // namespace lbdem

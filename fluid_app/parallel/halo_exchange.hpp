@@ -1,0 +1,55 @@
+#pragma once
+// Halo exchange of the AA-pattern lattice with the (up to 18) neighbour ranks that D3Q19
+// links reach (6 faces, 12 edges; D3Q19 has no corner velocities).
+//
+// For a direction e, the "ghost list" holds the ghost locations (cell g beyond the e side,
+// population j) whose source cell g - c_j is interior, and the "inner list" the interior
+// locations (y, j) whose source y - c_j lies beyond the e side. The ghost list of one rank
+// and the inner list of its neighbour describe the same lattice links in the same order.
+//   after an even step (pull): neighbour's inner values  -> our ghost locations
+//                              (post-collision values the next odd step streams in);
+//   after an odd step  (push): our ghost values -> neighbour's inner locations
+//                              (what our cells streamed across the boundary).
+// Each link is copied once per step (5 values per face cell, 1 per edge cell), in a single
+// round of messages, so the exchange can overlap with the update of the inner cells.
+#include <mpi.h>
+
+#include <array>
+#include <vector>
+
+#include "fluid_app/parallel/decomposition.hpp"
+
+namespace lbdem {
+
+template <class T>
+class HaloExchange {
+ public:
+  HaloExchange(const Decomposition& dec, CellIndex stride);
+
+  // Post the remote messages of this step (after every cell that feeds them is updated).
+  void start(T* f, bool after_odd);
+  // Copies to ourselves (periodic axes with one rank), waits, unpacks.
+  void finish(T* f, bool after_odd);
+
+  // Element offsets (population * stride + cell) of direction e's lists, for tests.
+  const std::vector<CellIndex>& ghost_list(int dir) const { return links_[dir].ghost; }
+  const std::vector<CellIndex>& inner_list(int dir) const { return links_[dir].inner; }
+  static int direction(int ex, int ey, int ez) { return (ex + 1) + 3 * (ey + 1) + 9 * (ez + 1); }
+
+ private:
+  struct Links {
+    int neighbour = MPI_PROC_NULL;
+    std::array<int, 3> e{};
+    std::vector<CellIndex> ghost, inner;
+    std::vector<T> send, recv;
+  };
+  MPI_Comm comm_;
+  int rank_;
+  std::array<Links, 27> links_;
+  std::vector<MPI_Request> requests_;
+};
+
+extern template class HaloExchange<double>;
+extern template class HaloExchange<float>;
+
+}  // namespace lbdem
