@@ -33,7 +33,10 @@ void Recorder::states(std::int64_t step, std::span<const BodyState> owned) {
 
 void Recorder::loads(std::int64_t step, std::span<const BodyLoad> reduced) {
   const auto all = gather_sorted(reduced, side_);
-  if (writer_) writer_->append_loads(step, all);
+  if (!writer_) return;
+  writer_->append_loads(step, all);
+  // Flushed now and then, so a run that fails later leaves a readable recording up to here.
+  if (++steps_ % kFlushEvery == 0) writer_->flush();
 }
 
 }  // namespace lbdem

@@ -24,7 +24,9 @@ class Recorder {
  private:
   MPI_Comm side_;
   int rank_ = 0;
+  static constexpr int kFlushEvery = 16;     // steps between flushes of the file
   std::unique_ptr<RecordingWriter> writer_;  // rank 0 only
+  std::int64_t steps_ = 0;
 };
 
 }  // namespace lbdem

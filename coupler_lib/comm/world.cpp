@@ -73,6 +73,12 @@ std::string mismatch(const Hello& a, const Hello& b) {
   return "";
 }
 
+std::string seconds(double s) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%g", s);
+  return b;
+}
+
 PeerInfo peer_of(const Hello& h) {
   return {h.side, h.program, h.scene, h.scene_hash, h.protocol, h.size};
 }
@@ -131,8 +137,8 @@ World connect(const AppContext& ctx, const ConnectOptions& options) {
                         std::chrono::microseconds(static_cast<long long>(timeout * 1e6));
   if (!wait_request_until(req, deadline))
     throw SideError("the other program did not reach the coupling handshake within " +
-                    std::to_string(timeout) +
-                    " s (coupling.handshake_timeout); it failed or finished before coupling");
+                    seconds(timeout) +
+                    " s (coupling.handshake_timeout): it failed or finished before coupling");
 
   MPI_Comm inter = MPI_COMM_NULL;
   MPI_Intercomm_create(ctx.side_comm, 0, MPI_COMM_WORLD, lead[1 - ctx.app], kIntercommTag, &inter);

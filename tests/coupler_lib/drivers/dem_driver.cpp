@@ -29,6 +29,7 @@ int run(AppContext& ctx, const synthetic::DriverOptions& opt) {
     std::fflush(stderr);
     std::_Exit(3);
   }
+  if (opt.finish_at_start) return 0;
   std::optional<World> world;
   std::optional<DemCoupler> coupler;
   if (ctx.cli.replay.empty()) {

@@ -25,6 +25,7 @@ int run(AppContext& ctx, const synthetic::DriverOptions& opt) {
     std::fflush(stderr);
     std::_Exit(3);
   }
+  if (opt.finish_at_start) return 0;
   FluidGeometry geo;
   geo.mine = synthetic::fluid_box(scene, ctx.rank, ctx.size);
   geo.domain = synthetic::domain_box(scene);

@@ -26,6 +26,7 @@ struct DriverOptions {
   std::int64_t throw_at_step = -1;  // throw a std::runtime_error at this step ...
   int throw_rank = 0;               // ... on this rank
   bool exit_at_start = false;       // leave before the handshake, as a crash would
+  bool finish_at_start = false;     // return normally without coupling (a program bug)
   std::uint32_t announce_version = kProtocolVersion;
   std::int64_t perturb_step = -1;  // change one packet by one ulp at this step
 };
@@ -45,6 +46,8 @@ inline DriverOptions take_driver_options(int& argc, char** argv) {
       o.throw_rank = std::stoi(value());
     else if (a == "--exit-at-start")
       o.exit_at_start = true;
+    else if (a == "--finish-at-start")
+      o.finish_at_start = true;
     else if (a == "--announce-version")
       o.announce_version = static_cast<std::uint32_t>(std::stoul(value()));
     else if (a == "--perturb-step")
