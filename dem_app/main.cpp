@@ -1,17 +1,26 @@
-// dem_app: the discrete element side of the co-simulation (LAMMPS as a library).
+// dem_app: the discrete element side of the co-simulation (LAMMPS as a library). A scene
+// without a fluid section runs here alone; see dem_app/dem_run.hpp.
 #include "coupler_lib/app/run_app.hpp"
+#include "dem_app/dem_run.hpp"
+#include "dem_app/scene_shapes.hpp"
 
 int main(int argc, char** argv) {
   const lbdem::AppInfo info{"dem", "dem_app", "rigid multi-sphere bodies and contacts (LAMMPS)"};
   return lbdem::run_app(
       argc, argv, info,
       [](lbdem::AppContext& ctx) {
+        const auto setup = lbdem::make_dem_setup(ctx.scene, lbdem::build_scene_shapes(ctx.scene),
+                                                 ctx.scene.coupled());
+        lbdem::validate_dem_setup(setup);
         if (ctx.rank == 0)
-          ctx.log->info("scene '{}' is valid:\n{}", ctx.scene.name,
-                        lbdem::describe_resolved(ctx.scene));
+          ctx.log->info("scene '{}' is valid:\n{}DEM: {}", ctx.scene.name,
+                        lbdem::describe_resolved(ctx.scene), lbdem::describe_engine_inputs(setup));
       },
       [](lbdem::AppContext& ctx) {
-        ctx.log->info("scene '{}' loaded", ctx.scene.name);
-        return 0;
+        if (ctx.scene.fluid)
+          throw lbdem::SceneError(ctx.scene.file +
+                                  ": the scene has a fluid section; dem_app runs alone only "
+                                  "for DEM-only scenes (coupled runs need the coupling driver)");
+        return lbdem::run_dem_only(ctx);
       });
 }

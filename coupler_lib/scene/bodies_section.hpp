@@ -1,6 +1,12 @@
 #pragma once
-// The `bodies:` list of a scene: where bodies start and how they move initially.
+// The `bodies:` list of a scene: where bodies start and how they move initially. An entry is
+// either one body or a generator (`generate: lattice | random`) that places `count` bodies (or
+// enough for a `solid_fraction`) without overlap inside a region, with random orientations
+// drawn from a seed. Generators are expanded while parsing, deterministically (own RNG
+// arithmetic, no implementation-defined distributions), so both binaries get the same list.
 #include <array>
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +23,32 @@ struct BodyParams {
   std::array<double, 3> angular_velocity{};       // rad/s
   double density = 0;                             // kg/m^3
 };
+
+// Bounding radius and volume of an analytic shape kind, known without building the shape.
+struct ShapeExtent {
+  double bounding_radius = 0;  // m, circumscribed sphere about the centroid
+  double volume = 0;           // m^3
+};
+std::optional<ShapeExtent> analytic_extent(const ShapeParams& shape);
+
+// What a generator entry asks for.
+struct BodyGenerator {
+  std::string pattern;  // lattice | random
+  int shape = 0;
+  double density = 0;
+  std::array<double, 3> lo{}, hi{};  // region the bodies lie in entirely
+  long count = 0;
+  double min_distance = 0;     // centre-to-centre, m
+  double bounding_radius = 0;  // m, keeps bodies inside the region
+  std::uint64_t seed = 1;
+  bool random_orientation = true;
+  std::array<double, 4> orientation{1, 0, 0, 0};
+  std::array<double, 3> velocity{};
+  std::array<double, 3> angular_velocity{};
+};
+
+// Places the bodies of a generator; throws SceneError (via `where`) when they do not fit.
+std::vector<BodyParams> generate_bodies(const BodyGenerator& g, const Section& where);
 
 std::vector<BodyParams> parse_bodies(Section& root, const std::vector<ShapeParams>& shapes);
 

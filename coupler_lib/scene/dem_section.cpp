@@ -2,11 +2,93 @@
 
 namespace lbdem {
 
+const char* axis_name(int axis) {
+  static constexpr const char* kNames[3] = {"x", "y", "z"};
+  return kNames[axis];
+}
+
+namespace {
+
+int axis_index(const std::string& a) {
+  return a == "x" ? 0 : a == "y" ? 1 : 2;
+}
+
+DemMaterial parse_material(Section& s) {
+  DemMaterial m;
+  m.young_modulus =
+      s.get<double>("young_modulus", m.young_modulus, "Young's modulus E of bodies and walls in Pa",
+                    Bounds::positive());
+  m.poisson_ratio =
+      s.get<double>("poisson_ratio", m.poisson_ratio, "Poisson ratio nu", {-1.0, 0.5, true, true});
+  // Hertz + Tsuji damping can only produce e in [0.114, 0.9996] or exactly 1 (no damping);
+  // the restitution map rejects values outside with the admissible range.
+  m.restitution = s.get<double>("restitution", m.restitution,
+                                "normal coefficient of restitution of a binary collision",
+                                {0.0, 1.0, true, false});
+  m.friction = s.get<double>("friction", m.friction, "Coulomb friction coefficient mu",
+                             Bounds::non_negative());
+  s.finish();
+  return m;
+}
+
+}  // namespace
+
 DemParams parse_dem(Section& s) {
   DemParams p;
   p.gravity = s.vec3("gravity", {0, 0, -9.81}, "gravitational acceleration in m/s^2");
-  p.dt = s.get<double>("dt", 0.0, "DEM time step in s (0: a fraction of the Rayleigh time)",
+  p.buoyancy_fluid_density = s.get<double>(
+      "buoyancy_fluid_density", 0.0,
+      "fluid density in kg/m^3 for buoyancy -rho_f V g on each body in DEM-only runs (0: none; "
+      "in coupled runs the fluid side supplies it)",
+      Bounds::non_negative());
+  p.dt = s.get<double>("dt", 0.0, "DEM time step in s (0: dt_fraction times the Rayleigh time)",
                        Bounds::non_negative());
+  p.dt_fraction = s.get<double>("dt_fraction", 0.05,
+                                "DEM time step as a fraction of the Rayleigh time of the smallest "
+                                "clump sphere (paper: 0.05)",
+                                {0.0, 1.0, true, false});
+  if (auto m = s.optional_section("material", "contact material of bodies and walls"))
+    p.material = parse_material(*m);
+  if (auto b = s.optional_section("box", "DEM box (default: [0, fluid.domain])")) {
+    p.has_box = true;
+    p.box_lo = b->require_vec3("lo", "lower corner in m");
+    p.box_hi = b->require_vec3("hi", "upper corner in m");
+    for (int d = 0; d < 3; ++d)
+      if (!(p.box_hi[d] > p.box_lo[d]))
+        b->fail("hi",
+                std::string("upper corner must exceed the lower corner along ") + axis_name(d));
+    b->finish();
+  }
+  const auto periodic =
+      s.get<std::string>("periodic", "", "periodic axes, any of the letters x, y, z (e.g. \"xy\")");
+  for (char c : periodic) {
+    if (c != 'x' && c != 'y' && c != 'z')
+      s.fail("periodic", "expected only the letters x, y and z, got '" + periodic + "'");
+    p.periodic[axis_index(std::string(1, c))] = true;
+  }
+  for (auto& w : s.list("walls", "plane walls (LAMMPS fix wall/gran)")) {
+    DemWall wall;
+    wall.axis = axis_index(w.require_choice("axis", {"x", "y", "z"}, "wall normal axis"));
+    wall.lower =
+        w.require_choice("side", {"lo", "hi"}, "lo: bodies lie above the wall, hi: below") == "lo";
+    if (w.has("position"))
+      wall.position = w.require<double>("position", "wall coordinate in m (default: the box face)");
+    w.finish();
+    p.walls.push_back(wall);
+  }
+  p.neighbor_skin = s.get<double>(
+      "neighbor_skin", 0.0, "neighbour-list skin in m (0: half the largest clump-sphere radius)",
+      Bounds::non_negative());
+  if (auto o = s.optional_section("output", "DEM-only output (HDF5 + XDMF bodies, CSV energy)")) {
+    p.output.interval =
+        o->get<double>("interval", 0.0, "simulated seconds between body snapshots (0: none)",
+                       Bounds::non_negative());
+    p.output.energy_interval = o->get<double>(
+        "energy_interval", 0.0, "simulated seconds between energy rows (0: same as interval)",
+        Bounds::non_negative());
+    p.output.directory = o->get<std::string>("directory", ".", "output directory");
+    o->finish();
+  }
   s.finish();
   return p;
 }

@@ -1,17 +1,55 @@
 #pragma once
-// The `dem:` section of a scene: contact model, walls, gravity, DEM time step.
+// The `dem:` section of a scene: contact material, box and walls, gravity and buoyancy, the
+// DEM time step and the DEM-only output. Defaults are the hindered-settling parameters of the
+// paper (table "Summary of physical and numerical parameters used for hindered settling").
 #include <array>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "coupler_lib/scene/yaml_reader.hpp"
 
 namespace lbdem {
 
+// Contact material shared by body-body and body-wall contacts.
+struct DemMaterial {
+  double young_modulus = 5e4;  // Pa
+  double poisson_ratio = 0.3;
+  double restitution = 0.9;  // normal coefficient of restitution of a binary collision
+  double friction = 0.6;     // Coulomb coefficient of the Mindlin tangential force
+};
+
+// A plane wall normal to `axis` (0, 1, 2); `lower` walls keep bodies above `position`.
+struct DemWall {
+  int axis = 2;
+  bool lower = true;
+  std::optional<double> position;  // m; empty: the box face
+};
+
+struct DemOutput {
+  double interval = 0;         // s of simulated time between body snapshots; 0 = none
+  double energy_interval = 0;  // s between CSV energy rows; 0 = same as `interval`
+  std::string directory = ".";
+};
+
 struct DemParams {
   std::array<double, 3> gravity{0, 0, -9.81};  // m/s^2
-  double dt = 0;                               // s; 0 = from the Rayleigh time
+  double buoyancy_fluid_density = 0;           // kg/m^3; DEM-only runs: -rho_f V g per body
+  double dt = 0;                               // s; 0 = dt_fraction * Rayleigh time
+  double dt_fraction = 0.05;                   // of the Rayleigh time (paper: 0.05 t_c)
+  DemMaterial material;
+  bool has_box = false;  // false: the box is [0, fluid.domain]
+  std::array<double, 3> box_lo{0, 0, 0};
+  std::array<double, 3> box_hi{0, 0, 0};
+  std::array<bool, 3> periodic{false, false, false};
+  std::vector<DemWall> walls;
+  double neighbor_skin = 0;  // m; 0 = half the largest clump-sphere radius
+  DemOutput output;
 };
 
 DemParams parse_dem(Section& s);
+
+// "x", "y" or "z" for an axis index.
+const char* axis_name(int axis);
 
 }  // namespace lbdem

@@ -1,0 +1,59 @@
+#pragma once
+// DEM-only output: body snapshots as HDF5 + XDMF (ParaView: Polyvertex points with per-body
+// attributes; orient glyphs by axis_x/axis_y/axis_z or use the rotation tensor), and a CSV
+// energy time series. Rank 0 writes; the other ranks send it their bodies.
+#include <hdf5.h>
+#include <mpi.h>
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "coupler_lib/comm/packets.hpp"
+#include "dem_app/lammps_engine.hpp"
+
+namespace lbdem {
+
+// One snapshot's bodies gathered on rank 0, sorted by id.
+std::vector<BodyState> gather_states(const std::vector<BodyState>& mine, MPI_Comm comm);
+
+class BodySnapshotWriter {
+ public:
+  // Files: <directory>/<name>_bodies.h5 and <name>_bodies.xdmf (rank 0 only).
+  BodySnapshotWriter(const std::string& directory, const std::string& name, MPI_Comm comm);
+  ~BodySnapshotWriter();
+  BodySnapshotWriter(const BodySnapshotWriter&) = delete;
+  BodySnapshotWriter& operator=(const BodySnapshotWriter&) = delete;
+
+  // Collective: gathers the owned states and appends one snapshot at `time`.
+  void write(const std::vector<BodyState>& owned, double time);
+  int snapshots() const { return count_; }
+  const std::string& h5_path() const { return h5_path_; }
+  const std::string& xdmf_path() const { return xdmf_path_; }
+
+ private:
+  void write_xdmf() const;
+
+  MPI_Comm comm_;
+  int rank_ = 0;
+  std::string h5_path_, xdmf_path_, h5_name_;
+  hid_t file_ = -1;
+  int count_ = 0;
+  std::vector<double> times_;
+  std::vector<long> sizes_;
+};
+
+// CSV rows: time, kinetic energy (translational, rotational), potential energy, contacts.
+class EnergySeries {
+ public:
+  EnergySeries(const std::string& path, MPI_Comm comm);
+  void write(double time, const DemEnergies& e);  // rank 0 writes; call on all ranks
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+  int rank_ = 0;
+  std::ofstream out_;
+};
+
+}  // namespace lbdem

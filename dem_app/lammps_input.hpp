@@ -1,0 +1,31 @@
+#pragma once
+// The text LAMMPS reads to create the bodies: a data file with every clump sphere (atoms,
+// body after body, tags 1..N in clump order, molecule ID = body id + 1) and the rigid-body
+// `infile` with mass, centre of mass, space-frame inertia, velocity and angular momentum from
+// the voxelized mass properties (mass = density x voxel volume).
+#include <string>
+#include <vector>
+
+#include "dem_app/dem_setup.hpp"
+
+namespace lbdem {
+
+// LAMMPS's rigid/small refuses one-particle bodies (it detects them by a zero extent), so a
+// one-sphere clump is given as two spheres displaced by +-1e-6 r along x: contacts change by
+// a relative 1e-6 and their mutual contact is excluded like any intra-body pair.
+Clump clump_for_lammps(const Clump& clump);
+
+std::string lammps_data_file(const DemSetup& setup);
+// `dt`: LAMMPS's set-up run leaves gravity out of the first half-kick (the rigid fix's
+// `gravity` keyword acts from the first step on), which would shift every trajectory by
+// -g dt/2 in velocity; the infile velocities carry +g dt/2 to cancel it exactly.
+std::string lammps_rigid_infile(const DemSetup& setup, double dt);
+
+// The commands that set up the system after the data file and infile are at `data_path`
+// and `infile_path`; `pair_args` is the contact model's argument string.
+std::vector<std::string> lammps_setup_commands(const DemSetup& setup, double dt,
+                                               const std::string& pair_args,
+                                               const std::string& data_path,
+                                               const std::string& infile_path);
+
+}  // namespace lbdem

@@ -1,0 +1,20 @@
+#include "dem_app/scene_shapes.hpp"
+
+#include "coupler_lib/shapes/build_shape.hpp"
+#include "coupler_lib/shapes/shape_error.hpp"
+
+namespace lbdem {
+
+std::vector<Shape> build_scene_shapes(const Scene& scene) {
+  std::vector<Shape> out;
+  for (const auto& p : scene.shapes) {
+    try {
+      out.push_back(build_shape(p, shape_voxel_spacing(p, scene.fluid)));
+    } catch (const ShapeError& e) {
+      throw SceneError(e.what());
+    }
+  }
+  return out;
+}
+
+}  // namespace lbdem

@@ -1,0 +1,12 @@
+#pragma once
+// The DEM's view of the scene's shape catalogue: clump, mass properties, bounding radius.
+#include <vector>
+
+#include "coupler_lib/scene/scene.hpp"
+#include "coupler_lib/shapes/shape.hpp"
+
+namespace lbdem {
+
+std::vector<Shape> build_scene_shapes(const Scene& scene);
+
+}  // namespace lbdem
