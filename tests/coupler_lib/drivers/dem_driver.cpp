@@ -30,6 +30,10 @@ int run(AppContext& ctx, const synthetic::DriverOptions& opt) {
     std::_Exit(3);
   }
   if (opt.finish_at_start) return 0;
+  if (!scene.coupled()) {
+    std::printf("dem_driver: the scene is not coupled, nothing to exchange\n");
+    return 0;
+  }
   std::optional<World> world;
   std::optional<DemCoupler> coupler;
   if (ctx.cli.replay.empty()) {

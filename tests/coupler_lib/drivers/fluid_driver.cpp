@@ -26,6 +26,10 @@ int run(AppContext& ctx, const synthetic::DriverOptions& opt) {
     std::_Exit(3);
   }
   if (opt.finish_at_start) return 0;
+  if (!scene.coupled()) {
+    std::printf("fluid_driver: the scene is not coupled, nothing to exchange\n");
+    return 0;
+  }
   FluidGeometry geo;
   geo.mine = synthetic::fluid_box(scene, ctx.rank, ctx.size);
   geo.domain = synthetic::domain_box(scene);
