@@ -39,12 +39,14 @@ std::string advice(const InstabilityReport& r, const UnitConverter& units) {
   const double tau = units.tau;
   if (r.kind == Instability::mach) {
     const double f = r.max_mach / r.mach;
+    const double min_tau = UnitLimits{}.min_tau;
     s << "likely cause: the flow is too fast for the lattice (lattice velocity u dt/dx = "
          "u (tau - 1/2) dx / (3 nu)). Change the scene: refine fluid.dx to <= "
-      << units.dx * f
-      << " m (Mach scales with dx at fixed tau), or lower fluid.tau to <= " << 0.5 + (tau - 0.5) * f
-      << " (Mach scales with tau - 1/2 at fixed dx; keep tau >= 0.51), or lower the driving "
-         "(body force, wall or body velocity).";
+      << units.dx * f << " m (Mach scales with dx at fixed tau), ";
+    if (0.5 + (tau - 0.5) * f >= min_tau)
+      s << "or lower fluid.tau to <= " << 0.5 + (tau - 0.5) * f
+        << " (Mach scales with tau - 1/2 at fixed dx; tau >= " << min_tau << "), ";
+    s << "or lower the driving (body force, wall or body velocity).";
     return s.str();
   }
   s << "likely cause: ";

@@ -83,7 +83,8 @@ void RunWatch<T>::observe(const FluidSolver<T>& solver, const StepInfo& info) {
   if (check) {
     failure_ = stability_->check(step, info.time, fields_);
     if (failure_) {
-      ctx_.log->error("{}", failure_->message);
+      // Every rank holds the same diagnosis; one prints it.
+      if (ctx_.rank == 0) ctx_.log->error("{}", failure_->message);
       return;
     }
   }
@@ -106,7 +107,7 @@ int RunWatch<T>::finish() {
     // One parseable line on stdout for tools/convergence_study.
     std::printf(
         "validation %s: cells %dx%dx%d, steps %lld, t = %.6g s, L2 relative velocity error "
-        "%.6e, max |u - u_ref| %.3e m/s, run time %.3f s\n",
+        "%.6e, max |u - u_ref| %.3e m/s, run time %.4g s\n",
         v.name.c_str(), n[0], n[1], n[2], static_cast<long long>(info.step), info.time,
         e.l2_relative, e.max_abs, seconds);
     std::fflush(stdout);
