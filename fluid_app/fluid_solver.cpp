@@ -1,6 +1,8 @@
 #include "fluid_app/fluid_solver.hpp"
 
+#include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <new>
 
 #include "fluid_app/boundary/boundary_links.hpp"
@@ -35,6 +37,13 @@ std::array<FaceRule, 6> face_rules(const FluidParams& p) {
     r[f].density = 1.0 + 3.0 * p.faces[f].pressure / p.units.pressure();
   }
   return r;
+}
+
+// x wrapped into [0, len).
+template <class T>
+T wrap(T x, T len) {
+  x -= len * std::floor(x / len);
+  return x >= len ? x - len : x;
 }
 
 template <class T, bool Odd, Forcing M>
@@ -151,14 +160,14 @@ class FluidSolverImpl {
         (force[0] != 0 || force[1] != 0 || force[2] != 0) ? Forcing::uniform : Forcing::none;
     if (porous_field.active) {
       mode = Forcing::porous;
-      table.assign(1, PorousBody<T>{});
-      table.insert(table.end(), porous_field.bodies.begin(), porous_field.bodies.end());
+      fill_table();
       a.d = porous_field.d.data();
       a.body = porous_field.body.data();
-      a.table = table.data();
+      for (int m = 0; m < 9; ++m) a.table[m] = table[m].data();
       for (int k = 0; k < 3; ++k) {
         a.period[k] = dec.periodic(k) ? T(box.global[k]) : T(0);
-        a.inv_period[k] = dec.periodic(k) ? T(1) / T(box.global[k]) : T(0);
+        a.half_period[k] =
+            dec.periodic(k) ? T(0.5) * T(box.global[k]) : std::numeric_limits<T>::infinity();
       }
     }
     const bool sum = params.control.enabled || measure;
@@ -178,6 +187,21 @@ class FluidSolverImpl {
     ++steps;
     if (sum) reduce_flow(sums);
     if (params.control.enabled) control();
+  }
+
+  // The body table as 9 flat arrays with a zero entry 0 (body -1); centres wrapped into
+  // [0, L) on periodic axes, which the kernel's minimum image relies on.
+  void fill_table() {
+    const auto& bodies = porous_field.bodies;
+    for (auto& t : table) t.assign(bodies.size() + 1, T(0));
+    for (std::size_t k = 0; k < bodies.size(); ++k) {
+      for (int ax = 0; ax < 3; ++ax) {
+        const T c = bodies[k].centre[ax];
+        table[ax][k + 1] = dec.periodic(ax) ? wrap(c, T(box.global[ax])) : c;
+        table[3 + ax][k + 1] = bodies[k].velocity[ax];
+        table[6 + ax][k + 1] = bodies[k].omega[ax];
+      }
+    }
   }
 
   void reduce_flow(const FlowSums& s) {
@@ -222,7 +246,7 @@ class FluidSolverImpl {
   bool measure = false;
   MeanFlow mean;
   PorousField<T> porous_field;
-  std::vector<PorousBody<T>> table;
+  std::array<std::vector<T>, 9> table;
 };
 
 template <class T>
@@ -287,10 +311,13 @@ std::array<T, 3> FluidSolver<T>::velocity(CellIndex cell) const {
     const auto p = m.box.coords(cell);
     T r[3];
     for (int k = 0; k < 3; ++k) {
-      r[k] = T(m.box.offset[k] + p[k] - 1) + T(0.5) - b.centre[k];
-      if (m.dec.periodic(k)) {
+      const bool per = m.dec.periodic(k);
+      r[k] = T(m.box.offset[k] + p[k] - 1) + T(0.5) -
+             (per ? wrap(b.centre[k], T(m.box.global[k])) : b.centre[k]);
+      if (per) {  // minimum image exactly as the kernel takes it
         const T len = T(m.box.global[k]);
-        r[k] -= len * std::floor(r[k] / len + T(0.5));
+        r[k] -= r[k] > T(0.5) * len ? len : T(0);
+        r[k] += r[k] < T(-0.5) * len ? len : T(0);
       }
     }
     const T up[3] = {b.velocity[0] + b.omega[1] * r[2] - b.omega[2] * r[1],

@@ -51,13 +51,14 @@ struct KernelArgs {
   LocalBox box;
   T omega = 1;               // 1 / tau
   std::array<T, 3> force{};  // uniform force density, lattice units
-  // Porous field (Forcing::porous only); `table` has an entry 0 with zero velocity for
-  // body = -1 and body k at k + 1.
+  // Porous field (Forcing::porous only). The body table is split into 9 arrays (centre,
+  // velocity, angular velocity components: gathers from flat arrays vectorize), each with an
+  // entry 0 of zeros for body = -1 and body k at k + 1.
   const float* d = nullptr;
   const std::int32_t* body = nullptr;
-  const PorousBody<T>* table = nullptr;
-  std::array<T, 3> period{};      // global lattice length on periodic axes
-  std::array<T, 3> inv_period{};  // 1 / period, 0 on non-periodic axes
+  std::array<const T*, 9> table{};
+  std::array<T, 3> period{};       // global lattice length on periodic axes
+  std::array<T, 3> half_period{};  // period / 2; +infinity on non-periodic axes
 };
 
 namespace detail {
@@ -85,16 +86,24 @@ inline void collide_cell(const KernelArgs<T>& a, CellIndex cell, int x, int y, i
   }
   if constexpr (Mode == Forcing::porous) {
     const T dd = T(a.d[cell]);
-    const PorousBody<T>& b = a.table[a.body[cell] + 1];
+    const int id = a.body[cell] + 1;
+    T bt[9];
+#pragma GCC unroll 9
+    for (int m = 0; m < 9; ++m) bt[m] = a.table[m][id];
     // Node position in global lattice coordinates (node g at g + 1/2), minimum image.
-    T r[3] = {T(a.box.offset[0] + x - 1) + T(0.5) - b.centre[0],
-              T(a.box.offset[1] + y - 1) + T(0.5) - b.centre[1],
-              T(a.box.offset[2] + z - 1) + T(0.5) - b.centre[2]};
+    T r[3] = {T(a.box.offset[0] + x - 1) + T(0.5) - bt[0],
+              T(a.box.offset[1] + y - 1) + T(0.5) - bt[1],
+              T(a.box.offset[2] + z - 1) + T(0.5) - bt[2]};
+    // Centres are wrapped into [0, L) on periodic axes (by the solver), so |r| < L and one
+    // conditional shift gives the minimum image (selects vectorize, floor does not).
 #pragma GCC unroll 3
-    for (int k = 0; k < 3; ++k) r[k] -= a.period[k] * std::floor(r[k] * a.inv_period[k] + T(0.5));
-    const T upx = b.velocity[0] + b.omega[1] * r[2] - b.omega[2] * r[1];
-    const T upy = b.velocity[1] + b.omega[2] * r[0] - b.omega[0] * r[2];
-    const T upz = b.velocity[2] + b.omega[0] * r[1] - b.omega[1] * r[0];
+    for (int k = 0; k < 3; ++k) {
+      r[k] -= r[k] > a.half_period[k] ? a.period[k] : T(0);
+      r[k] += r[k] < -a.half_period[k] ? a.period[k] : T(0);
+    }
+    const T upx = bt[3] + bt[7] * r[2] - bt[8] * r[1];
+    const T upy = bt[4] + bt[8] * r[0] - bt[6] * r[2];
+    const T upz = bt[5] + bt[6] * r[1] - bt[7] * r[0];
     const T pen = T(1) - dd;
     ux += pen * (upx - vx);
     uy += pen * (upy - vy);
@@ -133,52 +142,77 @@ inline void collide_cell(const KernelArgs<T>& a, CellIndex cell, int x, int y, i
 
 }  // namespace detail
 
-// Update the cells of `r` (local coordinates, interior only). `Odd` selects the AA step kind.
+namespace detail {
+
+// One row of cells along x: local cells (x0 .. x0+len-1, y, z).
 template <class T, bool Odd, Forcing Mode, bool Sum>
-void collide_stream(const KernelArgs<T>& a, const CellRange& r, FlowSums& sums) {
+inline void collide_row(const KernelArgs<T>& a, int x0, int len, int y, int z, FlowSums& s) {
   using namespace d3q19;
+  const CellIndex row = a.box.index(x0, y, z);
+  // Per population: where the loads and stores of this row start.
+  T* src[Q];
+  T* dst[Q];
+#pragma GCC unroll 19
+  for (int i = 0; i < Q; ++i) {
+    const CellIndex sh = a.box.shift(c[i][0], c[i][1], c[i][2]);
+    if constexpr (Odd) {
+      src[i] = a.f + opposite(i) * a.stride + row - sh;
+      dst[i] = a.f + i * a.stride + row + sh;
+    } else {
+      src[i] = a.f + i * a.stride + row;
+      dst[i] = a.f + opposite(i) * a.stride + row;
+    }
+  }
+  std::int64_t m0 = 0, m1 = 0, m2 = 0, mass = 0;
+#pragma GCC ivdep
+  for (int k = 0; k < len; ++k) {
+    T fin[Q], fout[Q];
+#pragma GCC unroll 19
+    for (int i = 0; i < Q; ++i) fin[i] = src[i][k];
+    FlowSums cs{};
+    collide_cell<T, Mode, Sum>(a, row + k, x0 + k, y, z, fin, fout, cs);
+    if constexpr (Sum) {
+      m0 += cs.momentum[0];
+      m1 += cs.momentum[1];
+      m2 += cs.momentum[2];
+      mass += cs.mass;
+    }
+#pragma GCC unroll 19
+    for (int i = 0; i < Q; ++i) dst[i][k] = fout[i];
+  }
+  if constexpr (Sum) {
+    s.momentum[0] += m0;
+    s.momentum[1] += m1;
+    s.momentum[2] += m2;
+    s.mass += mass;
+  }
+}
+
+}  // namespace detail
+
+// Update the cells of `r` (local coordinates, interior only). `Odd` selects the AA step kind.
+// With the porous field, a row without any cell of d < 1 takes the uniform-force variant:
+// for d = 1 the shift (1 - d)(u_p - v) adds exactly zero, so the result is the same, and the
+// cost of bodies grows with the rows they touch, not with the domain.
+template <class T, bool Odd, Forcing Mode, bool Sum>
+void collide_stream(const KernelArgs<T>& args, const CellRange& r, FlowSums& sums) {
+  // A private copy: the population stores cannot alias it, so its pointers and constants
+  // stay in registers instead of being reloaded after every store (which blocks vectorizing).
+  const KernelArgs<T> a = args;
+  const int len = r.hi[0] - r.lo[0];
   FlowSums s{};
   for (int z = r.lo[2]; z < r.hi[2]; ++z) {
     for (int y = r.lo[1]; y < r.hi[1]; ++y) {
-      const CellIndex row = a.box.index(r.lo[0], y, z);
-      const int len = r.hi[0] - r.lo[0];
-      // Per population: where the loads and stores of this row start.
-      T* src[Q];
-      T* dst[Q];
-#pragma GCC unroll 19
-      for (int i = 0; i < Q; ++i) {
-        const CellIndex sh = a.box.shift(c[i][0], c[i][1], c[i][2]);
-        if constexpr (Odd) {
-          src[i] = a.f + opposite(i) * a.stride + row - sh;
-          dst[i] = a.f + i * a.stride + row + sh;
-        } else {
-          src[i] = a.f + i * a.stride + row;
-          dst[i] = a.f + opposite(i) * a.stride + row;
+      if constexpr (Mode == Forcing::porous) {
+        const float* d = a.d + a.box.index(r.lo[0], y, z);
+        int solid = 0;
+        for (int k = 0; k < len; ++k) solid += d[k] < 1.0f ? 1 : 0;
+        if (solid == 0) {
+          detail::collide_row<T, Odd, Forcing::uniform, Sum>(a, r.lo[0], len, y, z, s);
+          continue;
         }
       }
-      std::int64_t m0 = 0, m1 = 0, m2 = 0, mass = 0;
-#pragma GCC ivdep
-      for (int k = 0; k < len; ++k) {
-        T fin[Q], fout[Q];
-#pragma GCC unroll 19
-        for (int i = 0; i < Q; ++i) fin[i] = src[i][k];
-        FlowSums cs{};
-        detail::collide_cell<T, Mode, Sum>(a, row + k, r.lo[0] + k, y, z, fin, fout, cs);
-        if constexpr (Sum) {
-          m0 += cs.momentum[0];
-          m1 += cs.momentum[1];
-          m2 += cs.momentum[2];
-          mass += cs.mass;
-        }
-#pragma GCC unroll 19
-        for (int i = 0; i < Q; ++i) dst[i][k] = fout[i];
-      }
-      if constexpr (Sum) {
-        s.momentum[0] += m0;
-        s.momentum[1] += m1;
-        s.momentum[2] += m2;
-        s.mass += mass;
-      }
+      detail::collide_row<T, Odd, Mode, Sum>(a, r.lo[0], len, y, z, s);
     }
   }
   if constexpr (Sum) {
