@@ -130,9 +130,9 @@ def main():
             order = r.get("order")
             o = f"{order:.2f}" if order is not None else "-"
             print(f"{case:<14}{r['n']:>5}{r['cells']:>12}{r['steps']:>8}{r['error']:>13.4e}{o:>8}"
-                  f"{r['time']:>12.3f}")
+                  f"{r['time']:>12.3g}")
             md.append(f"| {case} | {r['n']} | {r['cells']} | {r['steps']} | {r['error']:.3e} | {o} | "
-                      f"{r['time']:.3f} |")
+                      f"{r['time']:.3g} |")
             csv.append(f"{case},{r['n']},{r['cells']},{r['steps']},{r['error']:.6e},"
                        f"{'' if order is None else f'{order:.4f}'},{r['time']:.4f}")
             if order is not None and args.min_order and order < args.min_order:
