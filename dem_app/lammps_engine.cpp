@@ -55,11 +55,11 @@ std::string scratch_directory(MPI_Comm comm, int rank) {
 
 LammpsEngine::LammpsEngine(MPI_Comm comm, DemSetup setup) : setup_(std::move(setup)) {
   validate_dem_setup(setup_);
-  for (auto& sh : setup_.shapes) sh.clump = clump_for_lammps(sh.clump);
   MPI_Comm_dup(comm, &comm_);
   MPI_Comm_rank(comm_, &rank_);
   contact_ = make_contact_model(setup_.params.material, setup_.file);
   dt_ = dem_time_step(setup_);
+  for (auto& sh : setup_.shapes) sh.clump = clump_for_lammps(sh.clump);
   for (const auto& b : setup_.bodies)
     mass_.push_back(b.density * setup_.shapes[static_cast<size_t>(b.shape)].mass.volume);
   build();

@@ -29,9 +29,9 @@ double largest_sphere_radius(const DemSetup& setup) {
 Clump clump_for_lammps(const Clump& clump) {
   Clump c = clump;
   if (c.centers.size() == 1) {
-    const Eigen::Vector3d shift(1e-6 * c.radii[0], 0, 0);
-    c.centers = {clump.centers[0] - shift, clump.centers[0] + shift};
-    c.radii.push_back(c.radii[0]);
+    const double tiny = 1e-6 * c.radii[0];
+    c.centers.push_back(c.centers[0] + Eigen::Vector3d(tiny, 0, 0));
+    c.radii.push_back(tiny);
   }
   return c;
 }
@@ -154,7 +154,7 @@ std::vector<std::string> lammps_setup_commands(const DemSetup& setup, double dt,
                 axis_name(d) + "plane " + (wall.lower ? pos + " NULL" : "NULL " + pos));
   }
   c.push_back("fix rigid all rigid/small molecule infile " + infile_path +
-              (gravity ? " gravity grav" : "") + " reinit no");
+              (gravity ? " gravity grav" : ""));
   c.push_back(std::string("compute rl all rigid/local rigid ") + kRigidLocalColumns);
   c.push_back("compute contacts all contact/atom");
   c.push_back("compute ncontacts all reduce sum c_contacts");

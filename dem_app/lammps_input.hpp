@@ -10,9 +10,10 @@
 
 namespace lbdem {
 
-// LAMMPS's rigid/small refuses one-particle bodies (it detects them by a zero extent), so a
-// one-sphere clump is given as two spheres displaced by +-1e-6 r along x: contacts change by
-// a relative 1e-6 and their mutual contact is excluded like any intra-body pair.
+// LAMMPS's rigid/small refuses one-particle bodies (it detects them by a zero bounding box),
+// so a one-sphere clump gets a second, tiny sphere (radius 1e-6 r) 1e-6 r from the centre,
+// inside the first: it never touches anything, the contact law stays that of the one
+// sphere, and the force weights put the whole external force on the real sphere.
 Clump clump_for_lammps(const Clump& clump);
 
 std::string lammps_data_file(const DemSetup& setup);
