@@ -59,13 +59,16 @@ void DemCoupler::send_states(std::int64_t step, std::span<const BodyState> owned
   transport_->send_states(step, sent_, buckets);
   if (recorder_) recorder_->states(step, sent_);
   step_ = step;
+  answered_ = false;
 }
 
 std::vector<BodyLoad> DemCoupler::receive_loads(std::int64_t step) {
-  if (step != step_)
-    throw std::runtime_error(
-        "receive_loads(" + std::to_string(step) +
-        ") must follow send_states of the same step (last sent: " + std::to_string(step_) + ")");
+  if (answered_)
+    throw std::runtime_error("receive_loads(" + std::to_string(step) +
+                             ") without a send_states before it: each send_states is answered "
+                             "by exactly one receive_loads (last sent: step " +
+                             std::to_string(step_) + ")");
+  answered_ = true;
   std::vector<BodyLoad> loads = reduce_loads(sent_, transport_->receive_loads(step), step);
   if (recorder_) recorder_->loads(step, loads);
   return loads;

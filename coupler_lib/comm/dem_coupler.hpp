@@ -37,7 +37,8 @@ class DemCoupler {
 
   // Collective over both programs (live) or over the DEM ranks (replay).
   void send_states(std::int64_t step, std::span<const BodyState> owned);
-  // One load per body of the last send_states, in the same order.
+  // One load per body of the last send_states, in the same order. `step` is the label the
+  // fluid side gave its loads (checked on every packet).
   std::vector<BodyLoad> receive_loads(std::int64_t step);
 
   // The decomposition the fluid side announced (or the recorded one in a replay).
@@ -51,6 +52,7 @@ class DemCoupler {
   MPI_Comm side_;
   FluidLayout layout_;
   std::int64_t step_ = -1;       // step of the last send_states
+  bool answered_ = true;         // receive_loads answered it
   std::vector<BodyState> sent_;  // what was sent at step_
 };
 

@@ -79,14 +79,17 @@ std::vector<BodyState> FluidCoupler::receive_states(std::int64_t step) {
   std::sort(out.begin(), out.end(),
             [](const BodyState& a, const BodyState& b) { return a.id < b.id; });
   step_ = step;
+  answered_ = false;
   return out;
 }
 
 void FluidCoupler::send_loads(std::int64_t step, std::span<const BodyLoad> partials) {
-  if (step != step_)
+  if (answered_)
     throw std::runtime_error("send_loads(" + std::to_string(step) +
-                             ") must follow receive_states of the same step (last received: " +
+                             ") without a receive_states before it: each receive_states is "
+                             "answered by exactly one send_loads (last received: step " +
                              std::to_string(step_) + ")");
+  answered_ = true;
   std::vector<std::vector<BodyLoad>> buckets(static_cast<size_t>(transport_->dem_ranks()));
   std::unordered_map<std::int64_t, bool> sent;
   for (const BodyLoad& p : partials) {

@@ -10,8 +10,11 @@
 //
 // receive_states returns each body once (sorted by id) even when several periodic images
 // reach this rank: the fluid applies the minimum-image convention itself. send_loads takes
-// partials only for bodies received at the same step; they go back to the DEM rank that sent
-// the state, which sums the partials of all fluid ranks in fluid-rank order.
+// partials only for the bodies of the last receive_states (each receive_states is answered by
+// one send_loads); they go back to the DEM rank that sent the state, which sums the partials
+// of all fluid ranks in fluid-rank order. Step labels are the programs' choice (loads may be
+// labelled with the step that produced them); each receiver checks the label it was told to
+// expect, so both programs must label alike.
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -61,6 +64,7 @@ class FluidCoupler {
   int rank_ = 0;
   FluidLayout layout_;
   std::int64_t step_ = -1;                        // step of the last receive_states
+  bool answered_ = true;                          // send_loads answered it
   std::unordered_map<std::int64_t, int> source_;  // body id -> DEM rank that sent it
 };
 
