@@ -105,23 +105,29 @@ float BodyField<T>::evaluate(std::int32_t slot, std::uint32_t cell, std::vector<
   return d;
 }
 
-// Local coordinates (0..n+1) of the stored copies of global node `global` along an axis:
-// none, one, or, on a periodic axis spanned by one rank, two (interior cell and ghost).
+// Local coordinates of the stored copies of global node `global` along an axis: none, one,
+// or, on a periodic axis spanned by one rank, two (interior cell and ghost). Copies up to
+// two cells outside the stored range are clamped onto its edge and flagged: the surface
+// lies outside the box there, but its band may reach into it.
 template <class T>
-int BodyField<T>::local_images(int axis, long global, std::array<int, 3>& out) const {
+int BodyField<T>::local_images(int axis, long global, std::array<int, 3>& out,
+                               std::array<bool, 3>& clamped) const {
   const LocalBox& box = sub_.box;
+  const int last = box.n[axis] + 1;
   int count = 0;
+  auto add = [&](long l) {
+    if (l < -2 || l > last + 2) return;
+    out[count] = static_cast<int>(std::clamp(l, 0L, static_cast<long>(last)));
+    clamped[count] = l < 0 || l > last;
+    ++count;
+  };
   if (!sub_.periodic[axis]) {
-    const long l = global - box.offset[axis] + 1;
-    if (sub_.stored(axis, static_cast<int>(l))) out[count++] = static_cast<int>(l);
+    add(global - box.offset[axis] + 1);
     return count;
   }
   const long n = box.global[axis];
   const long w = ((global % n) + n) % n;
-  for (long m = -1; m <= 1; ++m) {
-    const long l = w + m * n - box.offset[axis] + 1;
-    if (l >= 0 && l <= box.n[axis] + 1) out[count++] = static_cast<int>(l);
-  }
+  for (long m = -1; m <= 1 && count < 3; ++m) add(w + m * n - box.offset[axis] + 1);
   return count;
 }
 
@@ -192,16 +198,33 @@ void BodyField<T>::follow_band(std::int32_t slot, std::vector<BandCell>& band, U
   const ReferencePorosity& ref = shapes_[static_cast<std::size_t>(t.shape)];
   const Eigen::Matrix3d to_lattice = t.rot / frame_.units.dx;
   std::array<std::array<int, 3>, 3> img;
+  std::array<std::array<bool, 3>, 3> off;
   std::array<int, 3> cnt;
   for (const Eigen::Vector3d& s : ref.surface()) {
     const Eigen::Vector3d p = t.x + to_lattice * s;
     // Node g sits at g + 1/2: the nearest node to p is floor(p).
     for (int a = 0; a < 3; ++a)
-      cnt[a] = local_images(a, static_cast<long>(std::floor(p[a])), img[a]);
+      cnt[a] = local_images(a, static_cast<long>(std::floor(p[a])), img[a], off[a]);
     for (int i = 0; i < cnt[0]; ++i)
       for (int j = 0; j < cnt[1]; ++j)
         for (int k = 0; k < cnt[2]; ++k) {
-          const auto c = static_cast<std::uint32_t>(box.index(img[0][i], img[1][j], img[2][k]));
+          const int x = img[0][i], y = img[1][j], z = img[2][k];
+          if (off[0][i] || off[1][j] || off[2][k]) {
+            // The surface point lies just outside the box: the band cells it accounts for
+            // are within two cells of the clamped node (they need not touch a seed).
+            for (int dz = -2; dz <= 2; ++dz)
+              for (int dy = -2; dy <= 2; ++dy)
+                for (int dx = -2; dx <= 2; ++dx) {
+                  if (!sub_.stored(0, x + dx) || !sub_.stored(1, y + dy) || !sub_.stored(2, z + dz))
+                    continue;
+                  const auto c = static_cast<std::uint32_t>(box.index(x + dx, y + dy, z + dz));
+                  if (mark_[c] == epoch_) continue;
+                  const float d = evaluate(slot, c, band, stats);
+                  if (d > 0.0f && d < 1.0f) queue_.push_back(c);
+                }
+            continue;
+          }
+          const auto c = static_cast<std::uint32_t>(box.index(x, y, z));
           if (mark_[c] == epoch_) continue;
           evaluate(slot, c, band, stats);
           queue_.push_back(c);  // seeds grow whatever their own porosity
@@ -223,14 +246,18 @@ void BodyField<T>::follow_band(std::int32_t slot, std::vector<BandCell>& band, U
   }
 }
 
-// Upper bound (cells) of how far any point of the body's support moved.
+// Upper bound (cells) of how far any point of the body's surface moved: the centre's move
+// plus the chord 2 sin(theta / 2) r of the rotation R' R^T (angle theta) at the largest
+// surface radius r.
 template <class T>
 double BodyField<T>::displacement(const Tracked& t, const Tracked& next) const {
   Eigen::Vector3d dx;
   for (int a = 0; a < 3; ++a) dx[a] = sub_.min_image(a, next.x[a] - t.x[a]);
-  // |(R' - R) s| <= ||R' - R||_F |s|.
-  const double arm = shapes_[static_cast<std::size_t>(t.shape)].support_radius() / frame_.units.dx;
-  return dx.norm() + (next.rot - t.rot).norm() * arm;
+  const double cos_theta =
+      std::clamp(((next.rot * t.rot.transpose()).trace() - 1.0) / 2.0, -1.0, 1.0);
+  const double chord = std::sqrt(2.0 * (1.0 - cos_theta));  // = 2 sin(theta / 2)
+  const double arm = shapes_[static_cast<std::size_t>(t.shape)].surface_radius() / frame_.units.dx;
+  return dx.norm() + chord * arm;
 }
 
 // Two-body rule: a cell covered by several bodies gets the smallest porosity, d = min_k d_k,

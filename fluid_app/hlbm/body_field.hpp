@@ -113,7 +113,8 @@ class BodyField {
   void follow_band(std::int32_t slot, std::vector<BandCell>& band, UpdateStats& stats);
   void combine(std::span<const std::int32_t> order);
   double displacement(const Tracked& t, const Tracked& next) const;
-  int local_images(int axis, long global, std::array<int, 3>& out) const;
+  int local_images(int axis, long global, std::array<int, 3>& out,
+                   std::array<bool, 3>& clamped) const;
 };
 
 template <class T>
@@ -125,8 +126,8 @@ std::vector<BodyLoad> BodyField<T>::momentum_exchange(const Populations& f,
     const Tracked& t = tracked_[s];
     if (t.id < 0) continue;
     const auto slot = static_cast<std::int32_t>(s);
-    // Interior cells (d = 0) never neighbour a d = 1 cell (the smoothing is wider than a
-    // link, see docs/hlbm.md), so the body's band holds all its boundary links.
+    // Interior cells (d = 0) never neighbour a cell outside the body (the smoothing is
+    // wider than a link, see docs/hlbm.md), so the body's band holds all its boundary links.
     LinkLoad sum;
     for (const BandCell& b : t.band) {
       const auto l = sub_.box.coords(b.cell);

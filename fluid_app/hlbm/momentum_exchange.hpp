@@ -3,7 +3,7 @@
 // momentumExchangeTorque), per solid node, in lattice units.
 //
 // For a node x of body k (d(x) < 1, body(x) = k) and each direction i whose neighbour
-// x + c_i is pure fluid (d = 1), with f the post-stream populations:
+// x + c_i does not belong to body k, with f the post-stream populations:
 //   f_i(x + c_i)  crossed the link out of the body (velocity  c_i),
 //   f_ĩ(x)        crossed the link into the body   (velocity -c_i),
 // and the body gains
@@ -13,6 +13,15 @@
 // solidVelocity). A population entering the body deposits its momentum -c_i f_ĩ(x), one
 // leaving takes c_i f_i(x + c_i) away; the -u_p/+u_p terms make the force vanish for a body
 // moving with a uniform equilibrium flow (Galilean invariance).
+//
+// Link set: the paper takes the links to pure fluid nodes (d = 1). For an isolated body the
+// two are the same. Where the porous bands of two bodies overlap (bodies closer than about
+// two cells, i.e. in or near contact) the paper's set drops the links into the other body's
+// band, and then even a fluid at rest exerts a net force on each body (the ambient
+// pressure times the dropped surface). Taking every link whose far end is not body k's
+// keeps the link set closed, so a uniform state exerts no force whatever the neighbours,
+// and the momentum crossing a link between two bodies is counted once on each, with
+// opposite signs.
 #include <array>
 #include <cstdint>
 
@@ -64,7 +73,7 @@ LinkLoad link_load(const Subdomain& sub, const PorousField<T>& field, std::int32
   for (int i = 1; i < d3q19::Q; ++i) {
     const auto& c = d3q19::c[static_cast<std::size_t>(i)];
     const CellIndex nb = cell + sub.box.shift(c[0], c[1], c[2]);
-    if (field.d[static_cast<std::size_t>(nb)] != 1.0f) continue;
+    if (field.body[static_cast<std::size_t>(nb)] == k) continue;
     const double leaving = double(f(i, nb));
     const double entering = double(f(d3q19::opposite(i), cell));
     for (int a = 0; a < 3; ++a) out.force[a] -= (c[a] - u[a]) * leaving + (c[a] + u[a]) * entering;

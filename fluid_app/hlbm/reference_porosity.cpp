@@ -53,6 +53,7 @@ ReferencePorosity::ReferencePorosity(const Voxels& voxels) : h_(voxels.h) {
         // The smoothed porosity is < 1 up to two reference cells (face + trilinear) beyond
         // a solid voxel centre along any axis.
         support_radius_ = std::max(support_radius_, p.norm() + 2.0 * std::sqrt(3.0) * h_);
+        surface_radius_ = std::max(surface_radius_, p.norm() + 0.5 * std::sqrt(3.0) * h_);
         constexpr int kFaces[6][3] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
                                       {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
         for (const auto& f : kFaces)

@@ -41,6 +41,8 @@ class ReferencePorosity {
 
   // Largest distance of a point with porosity < 1 from the shape-frame origin (m).
   double support_radius() const { return support_radius_; }
+  // Largest distance of a solid voxel corner from the shape-frame origin (m).
+  double surface_radius() const { return surface_radius_; }
 
  private:
   static constexpr int kPad = 2;  // one layer for the 19-point stencil, one for trilinear
@@ -50,6 +52,7 @@ class ReferencePorosity {
   std::vector<float> smooth_;      // averaged porosity, padded lattice, x fastest
   std::vector<Eigen::Vector3d> surface_;
   double support_radius_ = 0;
+  double surface_radius_ = 0;
 
   float value(int i, int j, int k) const {
     return smooth_[static_cast<std::size_t>(i) +

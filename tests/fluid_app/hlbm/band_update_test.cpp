@@ -1,0 +1,146 @@
+// The surface-only porosity update (paper: "only the nodes currently covered by a body and a
+// surrounding growth layer have to be revisited") against a full recomputation.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "tests/fluid_app/hlbm/hlbm_fixtures.hpp"
+
+namespace lbdem::hlbm {
+namespace {
+
+using test::state;
+
+struct Motion {
+  Eigen::Vector3d x, v, w;  // centre (cells), velocity (cells/step), angular velocity (rad/step)
+  Eigen::Quaterniond q{1, 0, 0, 0};
+  int shape = 0;
+  std::int64_t id = 0;
+  void advance() {
+    x += v;
+    const double angle = w.norm();
+    if (angle > 0) q = Eigen::Quaterniond(Eigen::AngleAxisd(angle, w / angle)) * q;
+    q.normalize();
+  }
+  BodyState packet() const { return state(id, x, q, v, w, shape); }
+};
+
+void expect_same_field(const PorousField<double>& a, const PorousField<double>& b, int step) {
+  ASSERT_EQ(a.d.size(), b.d.size());
+  for (std::size_t c = 0; c < a.d.size(); ++c) {
+    ASSERT_EQ(a.d[c], b.d[c]) << "step " << step << " cell " << c;
+    ASSERT_EQ(a.body[c], b.body[c]) << "step " << step << " cell " << c;
+  }
+}
+
+TEST(BandUpdate, IncrementalEqualsFullAcrossRankAndPeriodicBoundaries) {
+  // A rotating cube and a sphere cross the periodic boundary in x, the block boundaries of a
+  // rank holding x in [5, 22) of 40 cells, pass close to each other, one leaves and comes
+  // back, and one jumps.
+  const Shape shapes[2] = {test::cube(7, 0.5), test::sphere(4.5, 0.5)};
+  const Subdomain sub = test::subdomain({40, 40, 40}, {5, 0, 0}, {17, 40, 40});
+  PorousField<double> fi, ff;
+  BodyField<double> inc(shapes, sub, test::unit_frame(), fi);
+  BodyField<double> full(shapes, sub, test::unit_frame(), ff);
+  std::vector<Motion> m(2);
+  m[0] = {Eigen::Vector3d(30, 20.3, 19.7), Eigen::Vector3d(0.45, 0.05, -0.02),
+          Eigen::Vector3d(0.02, 0.04, 0.03)};
+  m[0].id = 11;
+  m[1] = {Eigen::Vector3d(8.2, 10.1, 8.0), Eigen::Vector3d(0.1, 0.33, 0.0),
+          Eigen::Vector3d(0.0, 0.0, 0.1)};
+  m[1].shape = 1;
+  m[1].id = 5;
+  std::size_t evaluations = 0, full_scans = 0;
+  for (int step = 0; step < 70; ++step) {
+    std::vector<BodyState> states;
+    for (const Motion& b : m)
+      if (!(b.id == 5 && step >= 30 && step < 34)) states.push_back(b.packet());  // 5 away
+    if (step == 50) m[1].x += Eigen::Vector3d(3, 0, 0);  // a jump of 3 cells
+    const UpdateStats s = inc.update(states);
+    full.update(states, UpdateMode::full);
+    evaluations += s.evaluated;
+    full_scans += s.full_scans;
+    EXPECT_EQ(s.interior_conflicts, 0u) << "step " << step;
+    expect_same_field(fi, ff, step);
+    if (HasFatalFailure()) return;
+    for (Motion& b : m) b.advance();
+  }
+  std::printf("70 steps: %zu evaluations, %zu support scans\n", evaluations, full_scans);
+  // 2 first appearances, 1 removal, 1 re-appearance, 1 jump (removal + embedding).
+  EXPECT_EQ(full_scans, 6u);
+}
+
+TEST(BandUpdate, BodiesInContactStayConsistent) {
+  // Two cubes sliding past each other with their bands overlapping.
+  const Shape s = test::cube(6, 0.5);
+  const Subdomain sub = test::whole(24);
+  PorousField<double> fi, ff;
+  BodyField<double> inc({&s, 1}, sub, test::unit_frame(), fi);
+  BodyField<double> full({&s, 1}, sub, test::unit_frame(), ff);
+  // Faces 0.8 cells apart along x; b turns about x, which keeps its x faces in place.
+  Motion a{Eigen::Vector3d(8.1, 9.2, 12), Eigen::Vector3d(0, 0.2, 0.05), Eigen::Vector3d::Zero()};
+  Motion b{Eigen::Vector3d(14.9, 15.2, 12.1), Eigen::Vector3d(0, -0.2, 0),
+           Eigen::Vector3d(0.03, 0, 0)};
+  a.id = 1;
+  b.id = 2;
+  int shared = 0;
+  for (int step = 0; step < 25; ++step) {
+    const BodyState states[2] = {a.packet(), b.packet()};
+    const UpdateStats st = inc.update(states);
+    EXPECT_EQ(st.interior_conflicts, 0u);
+    EXPECT_EQ(st.full_scans, step == 0 ? 2u : 0u);
+    full.update(states, UpdateMode::full);
+    expect_same_field(fi, ff, step);
+    if (HasFatalFailure()) return;
+    for (CellIndex c = 0; c < sub.box.cells_with_ghosts(); ++c)
+      shared += inc.body_porosity(1, c) < 1.0f && inc.body_porosity(2, c) < 1.0f;
+    a.advance();
+    b.advance();
+  }
+  EXPECT_GT(shared, 0);
+}
+
+TEST(BandUpdate, CostGrowsWithSurfaceNotVolume) {
+  // Evaluations per incremental update for spheres of radius 4, 8, 16 cells: ~R^2.
+  std::vector<double> per_update;
+  for (double radius : {4.0, 8.0, 16.0}) {
+    const Shape s = test::sphere(radius, 0.5);
+    const int n = static_cast<int>(2 * radius) + 10;
+    const Subdomain sub = test::whole(n);
+    PorousField<double> field;
+    BodyField<double> bodies({&s, 1}, sub, test::unit_frame(), field);
+    Motion m{Eigen::Vector3d(n / 2.0, n / 2.0 + 0.2, n / 2.0 - 0.1),
+             Eigen::Vector3d(0.11, -0.07, 0.05), Eigen::Vector3d(0.01, 0.02, 0.0)};
+    BodyState st = m.packet();
+    const auto t0 = std::chrono::steady_clock::now();
+    const UpdateStats first = bodies.update({&st, 1});
+    const auto t1 = std::chrono::steady_clock::now();
+    std::size_t evaluated = 0, band = 0;
+    const int steps = 10;
+    for (int k = 0; k < steps; ++k) {
+      m.advance();
+      st = m.packet();
+      const UpdateStats stats = bodies.update({&st, 1});
+      evaluated += stats.evaluated;
+      band += stats.band;
+    }
+    const auto t2 = std::chrono::steady_clock::now();
+    const double full_us = std::chrono::duration<double, std::micro>(t1 - t0).count();
+    const double inc_us = std::chrono::duration<double, std::micro>(t2 - t1).count() / steps;
+    per_update.push_back(double(evaluated) / steps);
+    std::printf(
+        "R = %4.1f: full embed %7zu evals %8.0f us | incremental %7.0f evals, band %6.0f"
+        " cells, %7.0f us per update\n",
+        radius, first.evaluated, full_us, per_update.back(), double(band) / steps, inc_us);
+  }
+  // Doubling R multiplies a surface cost by 4 and a volume cost by 8.
+  EXPECT_GT(per_update[2] / per_update[1], 3.0);
+  EXPECT_LT(per_update[2] / per_update[1], 5.0);
+  EXPECT_LT(per_update[1] / per_update[0], 5.0);
+}
+
+}  // namespace
+}  // namespace lbdem::hlbm
