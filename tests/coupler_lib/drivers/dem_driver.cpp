@@ -61,7 +61,7 @@ int run(AppContext& ctx, const synthetic::DriverOptions& opt) {
     if (step == opt.perturb_step && !owned.empty() && ctx.rank == 0)
       owned.front().x[0] = std::nextafter(owned.front().x[0], 1e300);
     coupler->send_states(step, owned);
-    const std::vector<BodyLoad> loads = coupler->receive_loads(step);
+    const std::vector<BodyLoad> loads = coupler->receive_loads(step + opt.load_label);
     if (loads.size() != owned.size()) fail_check("one load per owned body");
     std::vector<double> w_new(3 * n, 0.0);
     for (size_t k = 0; k < owned.size(); ++k) {
@@ -75,7 +75,7 @@ int run(AppContext& ctx, const synthetic::DriverOptions& opt) {
             sum.t[d] += p.t[d];
           }
         }
-      if (loads[k].id != b.id || loads[k].step != step)
+      if (loads[k].id != b.id || loads[k].step != step + opt.load_label)
         fail_check("load " + std::to_string(k) + " is not for body " + std::to_string(b.id));
       for (int d = 0; d < 3; ++d)
         if (loads[k].f[d] != sum.f[d] || loads[k].t[d] != sum.t[d])

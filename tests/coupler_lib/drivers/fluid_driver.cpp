@@ -79,7 +79,7 @@ int run(AppContext& ctx, const synthetic::DriverOptions& opt) {
     for (const BodyState& s : got) partials.push_back(synthetic::partial(s, ctx.rank, step));
     if (step == opt.perturb_step && !partials.empty() && ctx.rank == 0)
       partials.front().f[1] = std::nextafter(partials.front().f[1], 1e300);
-    coupler->send_loads(step, partials);
+    coupler->send_loads(step + opt.load_label, partials);
   }
   long long total = 0, mine = seen;
   MPI_Allreduce(&mine, &total, 1, MPI_LONG_LONG, MPI_SUM, ctx.side_comm);
