@@ -1,6 +1,6 @@
 // coupler_idle_bench: how much CPU a coupled program burns while it waits for the other.
 //
-//   mpirun -np 2 coupler_idle_bench [--seconds S] [--share-core]
+//   mpirun -np 2 coupler_idle_bench [--seconds S] [--share-core] [--bodies N]
 //   mpirun -np 1 coupler_idle_bench : -np 1 coupler_idle_bench      (MPMD, same result)
 //
 // The ranks form two groups joined by an intercommunicator, as fluid_app and dem_app are.
@@ -10,7 +10,8 @@
 // waiting side's CPU time (getrusage: user + system, all threads) against wall time, and
 // the computing side's work rate relative to the back-off run. With --share-core every rank
 // is pinned to core 0, so the waiter competes with the computing rank for one core, as when
-// both programs share a node's cores.
+// both programs share a node's cores. Last, the cost of the exchange itself: round trips of
+// N states (DEM -> fluid) and N loads (fluid -> DEM) with no computation in between.
 #include <mpi.h>
 #include <sched.h>
 #include <sys/resource.h>
@@ -19,7 +20,10 @@
 #include <cstdio>
 #include <cstring>
 #include <string>
+#include <vector>
 
+#include "coupler_lib/comm/exchange.hpp"
+#include "coupler_lib/comm/packets.hpp"
 #include "coupler_lib/comm/wait.hpp"
 
 namespace {
@@ -65,17 +69,57 @@ Result run_mode(MPI_Comm inter, bool computing, double seconds, lbdem::WaitMode 
   return r;
 }
 
+// One coupling round trip without computation: the waiting group (as the DEM side) sends
+// `bodies` states spread over the computing group's ranks, which answer with one load each.
+// Returns seconds per round trip.
+double round_trip(MPI_Comm inter, bool fluid, long bodies, int rounds, lbdem::WaitMode mode) {
+  const int peers = lbdem::remote_size(inter);
+  int me = 0, mine = 0;
+  MPI_Comm_rank(inter, &me);
+  MPI_Comm_size(inter, &mine);
+  std::vector<std::vector<lbdem::BodyState>> states(static_cast<size_t>(peers));
+  std::vector<std::vector<lbdem::BodyLoad>> none(static_cast<size_t>(peers));
+  if (!fluid)
+    for (long id = me; id < bodies; id += mine) {
+      lbdem::BodyState b;
+      b.id = id;
+      states[static_cast<size_t>(id % peers)].push_back(b);
+    }
+  MPI_Barrier(MPI_COMM_WORLD);
+  const double t0 = now();
+  for (int r = 0; r < rounds; ++r) {
+    if (fluid) {
+      const auto got = lbdem::exchange(inter, decltype(states)(static_cast<size_t>(peers)), mode);
+      std::vector<std::vector<lbdem::BodyLoad>> loads(static_cast<size_t>(peers));
+      for (size_t p = 0; p < got.size(); ++p)
+        for (const auto& b : got[p]) {
+          lbdem::BodyLoad l;
+          l.id = b.id;
+          loads[p].push_back(l);
+        }
+      lbdem::exchange(inter, loads, mode);
+    } else {
+      lbdem::exchange(inter, states, mode);
+      lbdem::exchange(inter, none, mode);
+    }
+  }
+  return (now() - t0) / rounds;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   MPI_Init(&argc, &argv);
   double seconds = 3;
   bool share_core = false;
+  long bodies = 10000;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--seconds") && i + 1 < argc)
       seconds = std::stod(argv[++i]);
     else if (!std::strcmp(argv[i], "--share-core"))
       share_core = true;
+    else if (!std::strcmp(argv[i], "--bodies") && i + 1 < argc)
+      bodies = std::stol(argv[++i]);
   }
   int rank = 0, size = 1, flag = 0, app = 0, apps = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
@@ -124,6 +168,13 @@ int main(int argc, char** argv) {
       std::printf("%-9s %12.3f %12.3f %9.1f%% %22.3f\n", names[m], wait_stats[2 * m],
                   wait_stats[2 * m + 1], 100.0 * wait_stats[2 * m + 1] / wait_stats[2 * m],
                   work[m] / work[0]);
+  }
+  // Coupling overhead on its own: round trips with no computation on either side.
+  for (int m = 0; m < 2; ++m) {
+    const double t = round_trip(inter, group == 0, bodies, 50, modes[m]);
+    if (rank == 0)
+      std::printf("%s exchange of %ld states + %ld loads: %.3f ms per round trip\n", names[m],
+                  bodies, bodies, 1e3 * t);
   }
   MPI_Comm_free(&inter);
   MPI_Comm_free(&side);
