@@ -90,8 +90,9 @@ void BodySnapshotWriter::write(const std::vector<BodyState>& owned, double time)
         az.push_back(r(d, 2));
       }
       for (int d = 0; d < 4; ++d) quat.push_back(s.q[d]);
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) rot.push_back(r(i, j));
+      // Column-major, as VTK reads a 3x3 tensor: components 0-2 are the shape's x axis.
+      for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i) rot.push_back(r(i, j));
       id.push_back(s.id);
       shape.push_back(s.shape);
     }

@@ -1,7 +1,9 @@
 #pragma once
 // DEM-only output: body snapshots as HDF5 + XDMF (ParaView: Polyvertex points with per-body
-// attributes; orient glyphs by axis_x/axis_y/axis_z or use the rotation tensor), and a CSV
-// energy time series. Rank 0 writes; the other ranks send it their bodies.
+// attributes: position, orientation quaternion (w, x, y, z), velocity, angular velocity, id,
+// shape, the shape axes in space axis_x/axis_y/axis_z and the rotation matrix as a tensor,
+// column-major as VTK reads it, for the Tensor Glyph filter), and a CSV energy time series.
+// Rank 0 writes; the other ranks send it their bodies.
 #include <hdf5.h>
 #include <mpi.h>
 
