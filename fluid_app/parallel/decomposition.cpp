@@ -1,5 +1,6 @@
 #include "fluid_app/parallel/decomposition.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -16,12 +17,20 @@ Decomposition::Decomposition(MPI_Comm comm, std::array<int, 3> global, std::arra
     : periodic_(periodic) {
   int size = 1;
   MPI_Comm_size(comm, &size);
-  // MPI_Dims_create orders its free factors non-increasingly; we want the big ones on z
-  // (the slowest axis), so let it fill a reversed copy.
-  std::array<int, 3> rev = {dims[2], dims[1], dims[0]};
-  if (MPI_Dims_create(size, 3, rev.data()) != MPI_SUCCESS)
+  const bool automatic = dims[0] == 0 && dims[1] == 0 && dims[2] == 0;
+  if (MPI_Dims_create(size, 3, dims.data()) != MPI_SUCCESS)
     throw std::runtime_error("MPI_Dims_create failed for " + std::to_string(size) + " ranks");
-  dims_ = {rev[2], rev[1], rev[0]};
+  dims_ = dims;
+  if (automatic) {
+    // MPI_Dims_create gives balanced factors, largest first. Hand them to the axes from the
+    // longest to the shortest, so cuts go across the long axes (small halos). x counts half
+    // its length: cutting x makes short rows and strided halos, so it is cut last.
+    std::array<int, 3> order = {2, 1, 0};
+    const auto weight = [&](int a) { return a == 0 ? 0.5 * global[0] : double(global[a]); };
+    std::stable_sort(order.begin(), order.end(),
+                     [&](int l, int r) { return weight(l) > weight(r); });
+    for (int k = 0; k < 3; ++k) dims_[order[k]] = dims[k];
+  }
   for (int a = 0; a < 3; ++a)
     if (dims_[a] > global[a])
       throw std::runtime_error("cannot split " + std::to_string(global[a]) + " cells along axis " +

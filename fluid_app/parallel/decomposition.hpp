@@ -1,11 +1,13 @@
 #pragma once
 // Cartesian block decomposition of the global lattice over the ranks of one communicator.
 //
-// MPI_Dims_create factors the rank count; the largest factor goes to z and the smallest to x,
-// so x (the contiguous axis of the lattice) is split last: halos stay long contiguous rows and
-// the kernel keeps long vector loops. Uneven sizes are fine: the first N % p blocks of an axis
-// get one cell more. Every rank knows the rank of each of its 26 neighbours (MPI_PROC_NULL
-// across a non-periodic face), periodic images included (a rank can be its own neighbour).
+// MPI_Dims_create factors the rank count; the factors go to the axes from the longest to the
+// shortest (ties: z before y before x), with x counted at half its length, so that x (the
+// contiguous axis of the lattice) is split last: halos stay long contiguous rows and the kernel
+// keeps long vector loops. A cube on 2 ranks is cut along z, on 12 ranks into 2 x 2 x 3. Uneven
+// sizes are fine: the first N % p blocks of an axis get one cell more. Every rank knows the rank of
+// each of its 26 neighbours (MPI_PROC_NULL across a non-periodic face), periodic images included (a
+// rank can be its own neighbour).
 #include <mpi.h>
 
 #include <array>
