@@ -239,8 +239,8 @@ ClumpQuality clump_quality(const Clump& clump, const Voxels& voxels) {
   // Two-sided (Hausdorff) deviation: a voxel of the shape the clump misses is as far off as
   // the nearest clump voxel, a clump voxel outside the shape as far as the nearest shape
   // voxel; centre-to-centre distances less h/2 approximate the surface-to-point distance.
-  const auto to_shape = distance_to_other_kind(voxels);
-  const auto to_clump = distance_to_other_kind(cv);
+  const auto to_shape = distance_to_solid(voxels);
+  const auto to_clump = distance_to_solid(cv);
   std::size_t mismatch = 0, solid = 0;
   for (std::size_t i = 0; i < voxels.solid.size(); ++i) {
     solid += voxels.solid[i];

@@ -85,4 +85,10 @@ std::vector<double> distance_to_other_kind(const Voxels& voxels) {
   return out;
 }
 
+std::vector<double> distance_to_solid(const Voxels& voxels) {
+  auto d = squared_edt(voxels, 1);
+  for (auto& x : d) x = voxels.h * std::sqrt(x);
+  return d;
+}
+
 }  // namespace lbdem
