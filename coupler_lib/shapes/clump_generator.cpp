@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <sstream>
 
 #include "coupler_lib/shapes/distance_transform.hpp"
 #include "coupler_lib/shapes/mass_properties.hpp"
@@ -37,6 +38,19 @@ std::size_t mark_sphere(const Voxels& lattice, const Eigen::Vector3d& c, double 
   return fresh;
 }
 
+// Depth of an inside point as a sphere radius; a non-finite value would mark the whole
+// lattice, so it is an error rather than a silent bad clump.
+double checked_radius(const SolidGeometry& solid, const Eigen::Vector3d& c) {
+  const double r = solid.distance_to_surface(c);
+  if (!std::isfinite(r) || r < 0) {
+    std::ostringstream s;
+    s << "distance from (" << c.transpose() << ") to the surface of " << solid.describe() << " is "
+      << r;
+    throw ShapeError(s.str());
+  }
+  return r;
+}
+
 // The sphere added at the centre: at the voxel centroid with its exact depth as radius, or
 // at the deepest voxel when the centroid lies outside a non-convex solid.
 void add_center_sphere(const SolidGeometry& solid, const Voxels& voxels, Clump& clump) {
@@ -52,7 +66,7 @@ void add_center_sphere(const SolidGeometry& solid, const Voxels& voxels, Clump& 
     c = voxels.center(i0, j0, k0);
   }
   clump.centers.push_back(c);
-  clump.radii.push_back(solid.distance_to_surface(c));
+  clump.radii.push_back(checked_radius(solid, c));
 }
 
 // Depth of x below the surface (negative outside).
@@ -214,7 +228,7 @@ Clump fill_clump(const SolidGeometry& solid, const Voxels& voxels, const FillClu
     const int k = static_cast<int>(id / plane);
     const Eigen::Vector3d c = deepest_in_cell(solid, voxels.center(i, j, k), voxels.h);
     // The exact depth of the centre: the largest sphere there that stays inside.
-    const double r = solid.distance_to_surface(c);
+    const double r = checked_radius(solid, c);
     clump.centers.push_back(c);
     clump.radii.push_back(r);
     mark_sphere(voxels, c, r, covered);

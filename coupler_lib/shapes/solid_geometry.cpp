@@ -41,6 +41,11 @@ double triangle_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
 // to an ellipse, an ellipsoid, or a hyperellipsoid", 2013).
 double ellipsoid_distance(const Eigen::Vector3d& e, Eigen::Vector3d y) {
   y = y.cwiseAbs();
+  // Components within round-off of a symmetry plane are put on it (the distance is
+  // 1-Lipschitz, so this moves it by at most 1e-9 e_max): otherwise the root t sits within
+  // an ulp of -e_min^2 and x_i = e_i^2 y_i / (t + e_i^2) divides by zero.
+  for (int i = 0; i < 3; ++i)
+    if (y[i] <= 1e-9 * e.maxCoeff()) y[i] = 0;
   const double emin = e.minCoeff();
   auto G = [&](double t) {
     double g = -1;

@@ -69,6 +69,23 @@ TEST(SurfaceClump, ShapeErrorDecreasesWithMoreSpheres) {
   }
 }
 
+TEST(SurfaceClump, EllipsoidSpheresAreInscribedAndErrorsShrink) {
+  const SolidGeometry egg = SolidGeometry::ellipsoid({0.5, 0.3, 0.2});
+  const Voxels v = voxelize(egg, 1.0 / 50);
+  const Clump coarse = surface_clump(egg, v, {8, 1.0, true});
+  const Clump fine = surface_clump(egg, v, {16, 1.0, true});
+  expect_inscribed(egg, coarse);
+  expect_inscribed(egg, fine);
+  const ClumpQuality qc = clump_quality(coarse, v), qf = clump_quality(fine, v);
+  std::printf(
+      "ellipsoid surface grid 8: %zu spheres, %.4f / %.4f; grid 16: %zu spheres, "
+      "%.4f / %.4f (volume error / deviation)\n",
+      coarse.size(), qc.volume_error, qc.max_deviation, fine.size(), qf.volume_error,
+      qf.max_deviation);
+  EXPECT_LT(qf.volume_error, qc.volume_error);
+  EXPECT_LT(qf.max_deviation, qc.max_deviation);
+}
+
 TEST(FillClump, ReachesTheTargetCountWithInscribedSpheres) {
   const Voxels v = voxelize(kCube, 1.0 / 41);
   for (int n : {1, 27, 100}) {
