@@ -31,12 +31,14 @@ struct ShapeParams {
   std::string name;
   std::string kind;  // sphere | cube | cuboid | ellipsoid | stl
   // Characteristic length in m: sphere diameter, cube edge, longest cuboid edge, longest
-  // ellipsoid axis (2 a_max); for stl, 0 until the mesh is read (build_shape fills it).
+  // ellipsoid axis (2 a_max); for stl, the longest scaled bounding-box edge (the file is
+  // read and its bounds taken while parsing).
   double size = 0;
-  std::array<double, 3> extents{0, 0, 0};  // m: cuboid edges or ellipsoid semi-axes
-  std::string file;                        // stl: absolute path
-  double scale = 1;                        // stl: vertex coordinates are multiplied by this
-  double voxel_size = 0;                   // m; 0: use the default (see shape_voxel_spacing)
+  // m: cube/cuboid edges, sphere/ellipsoid semi-axes, stl scaled bounding-box edges
+  std::array<double, 3> extents{0, 0, 0};
+  std::string file;       // stl: absolute path
+  double scale = 1;       // stl: vertex coordinates are multiplied by this
+  double voxel_size = 0;  // m; 0: use the default (see shape_voxel_spacing)
   ClumpParams clump;
   std::string where;  // "scene.yaml:12: shapes[0]", for errors found after parsing
 };
