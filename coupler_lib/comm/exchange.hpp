@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -25,14 +26,16 @@ namespace lbdem {
 // Returns the received bytes packed by rank and fills `recv_counts`.
 std::vector<std::byte> exchange_bytes(MPI_Comm inter, const std::vector<std::byte>& send,
                                       const std::vector<int>& send_counts,
-                                      std::vector<int>& recv_counts, WaitMode mode);
+                                      std::vector<int>& recv_counts, WaitMode mode,
+                                      const std::function<void()>& between_tests = {});
 
 int remote_size(MPI_Comm inter);
 
 template <class Packet>
 std::vector<std::vector<Packet>> exchange(MPI_Comm inter,
                                           const std::vector<std::vector<Packet>>& send,
-                                          WaitMode mode) {
+                                          WaitMode mode,
+                                          const std::function<void()>& between_tests = {}) {
   static_assert(std::is_trivially_copyable_v<Packet>);
   std::vector<int> send_counts(send.size());
   size_t total = 0;
@@ -47,7 +50,8 @@ std::vector<std::vector<Packet>> exchange(MPI_Comm inter,
     at += n;
   }
   std::vector<int> recv_counts;
-  const std::vector<std::byte> got = exchange_bytes(inter, flat, send_counts, recv_counts, mode);
+  const std::vector<std::byte> got =
+      exchange_bytes(inter, flat, send_counts, recv_counts, mode, between_tests);
   std::vector<std::vector<Packet>> out(recv_counts.size());
   at = 0;
   for (size_t i = 0; i < recv_counts.size(); ++i) {

@@ -5,7 +5,8 @@
 namespace lbdem {
 
 LiveFluidTransport::LiveFluidTransport(const World& world)
-    : inter_(world.inter()),
+    : world_(&world),
+      inter_(world.inter()),
       rank_(world.rank()),
       dem_ranks_(world.peer().size),
       wait_(world.wait()) {}
@@ -18,43 +19,43 @@ void LiveFluidTransport::announce(const FluidLayout& layout) {
   const int root = rank_ == 0 ? MPI_ROOT : MPI_PROC_NULL;
   MPI_Request req;
   MPI_Ibcast(&n, 1, MPI_UNSIGNED_LONG_LONG, root, inter_, &req);
-  wait_request(req, wait_);
+  wait_request(req, wait_, [this] { world_->check_peer(); });
   MPI_Ibcast(flat.data(), static_cast<int>(n), MPI_DOUBLE, root, inter_, &req);
-  wait_request(req, wait_);
+  wait_request(req, wait_, [this] { world_->check_peer(); });
 }
 
 std::vector<std::vector<BodyState>> LiveFluidTransport::receive_states(std::int64_t) {
   return exchange(inter_, std::vector<std::vector<BodyState>>(static_cast<size_t>(dem_ranks_)),
-                  wait_);
+                  wait_, [this] { world_->check_peer(); });
 }
 
 void LiveFluidTransport::send_loads(std::int64_t,
                                     const std::vector<std::vector<BodyLoad>>& per_dem_rank) {
-  exchange(inter_, per_dem_rank, wait_);
+  exchange(inter_, per_dem_rank, wait_, [this] { world_->check_peer(); });
 }
 
 LiveDemTransport::LiveDemTransport(const World& world)
-    : inter_(world.inter()), fluid_ranks_(world.peer().size), wait_(world.wait()) {}
+    : world_(&world), inter_(world.inter()), fluid_ranks_(world.peer().size), wait_(world.wait()) {}
 
 FluidLayout LiveDemTransport::receive_layout() {
   unsigned long long n = 0;
   MPI_Request req;
   MPI_Ibcast(&n, 1, MPI_UNSIGNED_LONG_LONG, 0, inter_, &req);
-  wait_request(req, wait_);
+  wait_request(req, wait_, [this] { world_->check_peer(); });
   std::vector<double> flat(n);
   MPI_Ibcast(flat.data(), static_cast<int>(n), MPI_DOUBLE, 0, inter_, &req);
-  wait_request(req, wait_);
+  wait_request(req, wait_, [this] { world_->check_peer(); });
   return unpack_layout(flat);
 }
 
 void LiveDemTransport::send_states(std::int64_t, std::span<const BodyState>,
                                    const std::vector<std::vector<BodyState>>& per_fluid_rank) {
-  exchange(inter_, per_fluid_rank, wait_);
+  exchange(inter_, per_fluid_rank, wait_, [this] { world_->check_peer(); });
 }
 
 std::vector<std::vector<BodyLoad>> LiveDemTransport::receive_loads(std::int64_t) {
   return exchange(inter_, std::vector<std::vector<BodyLoad>>(static_cast<size_t>(fluid_ranks_)),
-                  wait_);
+                  wait_, [this] { world_->check_peer(); });
 }
 
 }  // namespace lbdem

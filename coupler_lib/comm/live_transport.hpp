@@ -1,6 +1,7 @@
 #pragma once
 // The live transport: packets go to the other program over the intercommunicator
-// (exchange.hpp), waiting with the world's wait mode.
+// (exchange.hpp), waiting with the world's wait mode and watching for the other program
+// leaving early (World::check_peer).
 #include "coupler_lib/comm/transport.hpp"
 #include "coupler_lib/comm/world.hpp"
 
@@ -16,6 +17,7 @@ class LiveFluidTransport : public FluidTransport {
                   const std::vector<std::vector<BodyLoad>>& per_dem_rank) override;
 
  private:
+  const World* world_;
   MPI_Comm inter_;
   int rank_;
   int dem_ranks_;
@@ -32,6 +34,7 @@ class LiveDemTransport : public DemTransport {
   std::vector<std::vector<BodyLoad>> receive_loads(std::int64_t step) override;
 
  private:
+  const World* world_;
   MPI_Comm inter_;
   int fluid_ranks_;
   WaitMode wait_;

@@ -10,6 +10,7 @@
 #include <mpi.h>
 
 #include <chrono>
+#include <functional>
 #include <string>
 
 namespace lbdem {
@@ -18,8 +19,11 @@ enum class WaitMode { backoff, blocking };
 
 WaitMode wait_mode_from(const std::string& word);  // "backoff" | "blocking"
 
-// Completes `request` (it becomes MPI_REQUEST_NULL).
-void wait_request(MPI_Request& request, WaitMode mode);
+// Completes `request` (it becomes MPI_REQUEST_NULL). `between_tests`, if given, runs between
+// two tests and may throw to give up (World::check_peer); blocking mode then spins on
+// MPI_Test instead of calling MPI_Wait.
+void wait_request(MPI_Request& request, WaitMode mode,
+                  const std::function<void()>& between_tests = {});
 
 // Waits with back-off until `request` completes (true) or `deadline` passes (false; the
 // request stays pending).

@@ -4,6 +4,7 @@
 #include <climits>
 #include <cstdio>
 #include <cstring>
+#include <exception>
 #include <utility>
 
 namespace lbdem {
@@ -12,6 +13,9 @@ namespace {
 
 constexpr std::uint32_t kHelloMagic = 0x4c42444d;  // "LBDM"
 constexpr int kIntercommTag = 4711;
+constexpr int kGoodbyeTag = 4712;
+// Packets the other program sent before its goodbye may still be on their way.
+constexpr std::chrono::seconds kGoodbyeGrace{5};
 
 // The first message between the programs. Plain bytes; the magic and protocol come first so
 // a peer with a different layout is still recognised as such.
@@ -93,6 +97,9 @@ World::World(MPI_Comm side, MPI_Comm inter, PeerInfo peer, WaitMode wait)
     : side_(side), inter_(inter), peer_(std::move(peer)), wait_(wait) {
   MPI_Comm_rank(side_, &rank_);
   MPI_Comm_size(side_, &size_);
+  MPI_Comm_dup(inter_, &control_);
+  // Zero-length, so no buffer has to stay put while the World moves.
+  MPI_Irecv(nullptr, 0, MPI_INT, MPI_ANY_SOURCE, kGoodbyeTag, control_, &goodbye_);
 }
 
 World::World(World&& o) noexcept {
@@ -101,9 +108,13 @@ World::World(World&& o) noexcept {
 
 World& World::operator=(World&& o) noexcept {
   if (this != &o) {
-    if (inter_ != MPI_COMM_NULL) MPI_Comm_free(&inter_);
+    close();
     side_ = o.side_;
     inter_ = std::exchange(o.inter_, MPI_COMM_NULL);
+    control_ = std::exchange(o.control_, MPI_COMM_NULL);
+    goodbye_ = std::exchange(o.goodbye_, MPI_REQUEST_NULL);
+    peer_left_ = o.peer_left_;
+    peer_left_at_ = o.peer_left_at_;
     rank_ = o.rank_;
     size_ = o.size_;
     peer_ = std::move(o.peer_);
@@ -113,7 +124,35 @@ World& World::operator=(World&& o) noexcept {
 }
 
 World::~World() {
-  if (inter_ != MPI_COMM_NULL) MPI_Comm_free(&inter_);
+  close();
+}
+
+void World::close() noexcept {
+  if (inter_ == MPI_COMM_NULL) return;
+  // Unwinding an error: the process is about to abort the job, which ends the other program
+  // too; waiting for its goodbye here could wait forever.
+  if (std::uncaught_exceptions() > 0) return;
+  // Remote rank j hears from local rank j % size, so every rank gets exactly one goodbye.
+  for (int j = rank_; j < peer_.size; j += size_)
+    MPI_Send(nullptr, 0, MPI_INT, j, kGoodbyeTag, control_);
+  wait_request(goodbye_, WaitMode::backoff);
+  MPI_Comm_free(&control_);
+  MPI_Comm_free(&inter_);
+}
+
+void World::check_peer() const {
+  if (inter_ == MPI_COMM_NULL) return;
+  if (!peer_left_) {
+    int done = 0;
+    MPI_Test(&goodbye_, &done, MPI_STATUS_IGNORE);
+    if (!done) return;
+    peer_left_ = true;
+    peer_left_at_ = std::chrono::steady_clock::now();
+  }
+  if (std::chrono::steady_clock::now() - peer_left_at_ > kGoodbyeGrace)
+    throw SideError(peer_.program + " (the " + peer_.side +
+                    " side) finished while this program still waits for its packets: the two "
+                    "programs disagree on the number of coupling exchanges");
 }
 
 World connect(const AppContext& ctx, const ConnectOptions& options) {

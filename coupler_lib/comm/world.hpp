@@ -11,8 +11,15 @@
 //   * both read the same scene (Scene::hash of the file bytes).
 // A program that never reaches the handshake (it crashed, or finished without coupling)
 // makes the other give up after coupling.handshake_timeout seconds.
+//
+// At the end, each program says goodbye: a normal ~World sends a zero-length message to the
+// other program (on a duplicate of the intercommunicator) and waits, sleeping, for the other's
+// goodbye. A program still waiting for packets when the goodbye arrives (the two programs
+// disagree on the number of exchanges) ends the job after a short grace period
+// (check_peer), instead of waiting forever.
 #include <mpi.h>
 
+#include <chrono>
 #include <cstdint>
 #include <string>
 
@@ -36,7 +43,9 @@ struct ConnectOptions {
   std::uint32_t protocol = kProtocolVersion;  // announced version (tests announce others)
 };
 
-// This program's side of the coupling. Owns the intercommunicator; move-only.
+// This program's side of the coupling. Owns the intercommunicator; move-only. Couplers keep
+// a pointer to it: construct the World in its final place and keep it alive (and unmoved)
+// while they are used.
 class World {
  public:
   World() = default;
@@ -54,9 +63,19 @@ class World {
   const PeerInfo& peer() const { return peer_; }
   WaitMode wait() const { return wait_; }
 
+  // Called while waiting for packets: throws SideError when the other program said goodbye
+  // more than a grace period ago (it finished; what this program waits for will not come).
+  void check_peer() const;
+
  private:
+  void close() noexcept;
+
   MPI_Comm side_ = MPI_COMM_NULL;
   MPI_Comm inter_ = MPI_COMM_NULL;
+  MPI_Comm control_ = MPI_COMM_NULL;                // goodbyes travel here
+  mutable MPI_Request goodbye_ = MPI_REQUEST_NULL;  // the other program's goodbye
+  mutable bool peer_left_ = false;
+  mutable std::chrono::steady_clock::time_point peer_left_at_{};
   int rank_ = 0, size_ = 1;
   PeerInfo peer_;
   WaitMode wait_ = WaitMode::backoff;

@@ -43,7 +43,8 @@ int run(AppContext& ctx, const synthetic::DriverOptions& opt) {
     coupler.emplace(ctx, ctx.cli.replay);
   }
   const FluidLayout& layout = coupler->fluid_layout();
-  const Schedule sched = make_schedule(scene, scene.fluid->units.dt, scene.dem->dt);
+  Schedule sched = make_schedule(scene, scene.fluid->units.dt, scene.dem->dt);
+  if (opt.steps >= 0) sched.steps = opt.steps;
   const size_t n = scene.bodies.size();
   std::vector<double> w(3 * n, 0.0);  // angular velocity of every body, shared after each step
   for (std::int64_t step = 0; step < sched.steps; ++step) {

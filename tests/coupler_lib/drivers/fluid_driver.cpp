@@ -46,7 +46,8 @@ int run(AppContext& ctx, const synthetic::DriverOptions& opt) {
     coupler.emplace(ctx, ctx.cli.replay, geo);
   }
   const FluidLayout& layout = coupler->layout();
-  const Schedule sched = make_schedule(scene, scene.fluid->units.dt, scene.dem->dt);
+  Schedule sched = make_schedule(scene, scene.fluid->units.dt, scene.dem->dt);
+  if (opt.steps >= 0) sched.steps = opt.steps;
   std::int64_t seen = 0;
   for (std::int64_t step = 0; step < sched.steps; ++step) {
     if (step == opt.throw_at_step && ctx.rank == opt.throw_rank)

@@ -29,6 +29,7 @@ struct DriverOptions {
   bool finish_at_start = false;     // return normally without coupling (a program bug)
   std::uint32_t announce_version = kProtocolVersion;
   std::int64_t perturb_step = -1;  // change one packet by one ulp at this step
+  std::int64_t steps = -1;         // run this many steps instead of the schedule's
   std::int64_t load_label = 0;     // label loads step + this (the fluid_app convention is 1)
 };
 
@@ -51,6 +52,8 @@ inline DriverOptions take_driver_options(int& argc, char** argv) {
       o.finish_at_start = true;
     else if (a == "--announce-version")
       o.announce_version = static_cast<std::uint32_t>(std::stoul(value()));
+    else if (a == "--steps")
+      o.steps = std::stoll(value());
     else if (a == "--load-label")
       o.load_label = std::stoll(value());
     else if (a == "--perturb-step")
