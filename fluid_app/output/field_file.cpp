@@ -78,7 +78,8 @@ void write_quantity(hid_t group, const char* name, const FieldView& view, const 
   std::vector<T> data = gather_local<T>(view, sel, f, q, units);
   if (data.empty()) data.resize(3);  // a valid buffer for the empty selection
   // Ranks without samples still take part in the collective write, with empty selections.
-  const std::array<hsize_t, 4> mem_dims{sel.empty() ? 1 : count[0], count[1], count[2], 3};
+  // (A rank without samples gets a 1-sample memory space, then selects none of it.)
+  const std::array<hsize_t, 4> mem_dims = sel.empty() ? std::array<hsize_t, 4>{1, 1, 1, 3} : count;
   H5Handle mem_space(H5Screate_simple(rank, mem_dims.data(), nullptr), H5Sclose, "memory space");
   if (sel.empty()) {
     h5_check(H5Sselect_none(file_space), "empty file selection");
