@@ -38,6 +38,10 @@ DemSetup make_dem_setup(const Scene& scene, std::vector<Shape> shapes, bool coup
   } else {
     throw SceneError(scene.file + ": dem.box: required when the scene has no fluid section");
   }
+  if (coupled && s.params.buoyancy_fluid_density > 0)
+    throw SceneError(scene.file +
+                     ": dem.buoyancy_fluid_density: only for DEM-only scenes; in a coupled run "
+                     "the fluid side supplies buoyancy");
   s.external_loads = coupled || s.params.buoyancy_fluid_density > 0;
   return s;
 }

@@ -57,14 +57,14 @@ std::vector<double> force_weights(const Clump& clump) {
   // Least-norm solution of A w = b with columns a_i = (1, c_i) and b = (1, 0, 0, 0):
   // w_i = a_i . (A A^T)^+ b. A A^T is 4x4 and singular for planar or collinear clumps, so its
   // pseudo-inverse comes from an eigen-decomposition.
+  double scale = 0;  // body size: coordinates are scaled by it, the residual judged against it
+  for (size_t k = 0; k < clump.centers.size(); ++k)
+    scale = std::max(scale, clump.centers[k].norm() + clump.radii[k]);
   Mat4 m{};
-  double scale = 0;  // body size: the residual moment arm is judged against it
-  for (size_t k = 0; k < clump.centers.size(); ++k) {
-    const auto& c = clump.centers[k];
-    const std::array<double, 4> a{1.0, c[0], c[1], c[2]};
+  for (const auto& c : clump.centers) {
+    const std::array<double, 4> a{1.0, c[0] / scale, c[1] / scale, c[2] / scale};
     for (int i = 0; i < 4; ++i)
       for (int j = 0; j < 4; ++j) m[i][j] += a[i] * a[j];
-    scale = std::max(scale, c.norm() + clump.radii[k]);
   }
   Mat4 v{};
   const auto val = jacobi_eigen(m, v);
@@ -79,12 +79,13 @@ std::vector<double> force_weights(const Clump& clump) {
   std::vector<double> w;
   std::array<double, 4> sum{};
   for (const auto& c : clump.centers) {
-    const std::array<double, 4> a{1.0, c[0], c[1], c[2]};
+    const std::array<double, 4> a{1.0, c[0] / scale, c[1] / scale, c[2] / scale};
     w.push_back(a[0] * y[0] + a[1] * y[1] + a[2] * y[2] + a[3] * y[3]);
     for (int i = 0; i < 4; ++i) sum[i] += w.back() * a[i];
   }
+  // The residual moment arm, relative to the body size.
   const double moment = std::sqrt(sum[1] * sum[1] + sum[2] * sum[2] + sum[3] * sum[3]);
-  if (std::abs(sum[0] - 1.0) > 1e-10 || moment > 1e-9 * scale)
+  if (std::abs(sum[0] - 1.0) > 1e-10 || moment > 1e-10)
     throw std::invalid_argument(
         "the clump spheres cannot carry a force through the centre of mass without a torque "
         "(the centre of mass lies outside the span of the sphere centres)");

@@ -29,9 +29,17 @@ double largest_sphere_radius(const DemSetup& setup) {
 Clump clump_for_lammps(const Clump& clump) {
   Clump c = clump;
   if (c.centers.size() == 1) {
-    const double tiny = 1e-6 * c.radii[0];
-    c.centers.push_back(c.centers[0] + Eigen::Vector3d(tiny, 0, 0));
-    c.radii.push_back(tiny);
+    const double tiny = 1e-6 * c.radii[0], offset = 1e-3 * c.radii[0];
+    const Eigen::Vector3d p = c.centers[0];
+    if (p.norm() >= offset) {
+      c.centers.push_back(Eigen::Vector3d::Zero());
+      c.radii.push_back(tiny);
+    } else {
+      for (int d = 0; d < 3; ++d) {
+        c.centers.push_back(p + offset * Eigen::Vector3d::Unit(d));
+        c.radii.push_back(tiny);
+      }
+    }
   }
   return c;
 }

@@ -11,9 +11,11 @@
 namespace lbdem {
 
 // LAMMPS's rigid/small refuses one-particle bodies (it detects them by a zero bounding box),
-// so a one-sphere clump gets a second, tiny sphere (radius 1e-6 r) 1e-6 r from the centre,
-// inside the first: it never touches anything, the contact law stays that of the one
-// sphere, and the force weights put the whole external force on the real sphere.
+// so a one-sphere clump gets tiny helper spheres (radius 1e-6 r) inside the real one: one at
+// the centre of mass, or, when the sphere is centred within 1e-3 r of it, three at 1e-3 r
+// from the sphere's centre along x, y and z. They never touch anything, so the contact law
+// stays that of the one sphere, and the force weights can carry the external force through
+// the centre of mass exactly with weights of order one.
 Clump clump_for_lammps(const Clump& clump);
 
 std::string lammps_data_file(const DemSetup& setup);

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "engine_support.hpp"
 
@@ -43,6 +44,20 @@ TEST(Engine, FreeFallOfOneSphereIsExact) {
     EXPECT_NEAR(x, 0.05 + 0.1 * t, 1e-12);
     EXPECT_NEAR(z, 0.05 - 0.5 * 9.81 * t * t, 1e-12);
     EXPECT_NEAR(vz, -9.81 * t, 1e-12);
+  }
+}
+
+// DEM-only buoyancy: gravity on the body mass plus -rho_f V g through the external-load path
+// gives the reduced acceleration g (1 - rho_f / rho_b), again exactly.
+TEST(Engine, BuoyancyReducesGravityExactly) {
+  std::string text = kDrop;
+  text.replace(text.find("  dt: 1.0e-5"), 0, "  buoyancy_fluid_density: 1000\n");
+  LammpsEngine e(MPI_COMM_WORLD, test::setup_from_scene(test::scene_from_text(text)));
+  e.run(5000);
+  const double t = e.time(), g = 9.81 * (1.0 - 1000.0 / 2500.0);
+  for (const auto& s : e.owned_states(0)) {
+    EXPECT_NEAR(s.x[2], 0.05 - 0.5 * g * t * t, 1e-12);
+    EXPECT_NEAR(s.v[2], -g * t, 1e-12);
   }
 }
 
