@@ -8,10 +8,11 @@
 // intercommunicator; the second group waits in that barrier, once with the coupler's
 // back-off wait (wait.hpp) and once with a plain blocking MPI_Wait. The table gives the
 // waiting side's CPU time (getrusage: user + system, all threads) against wall time, and
-// the computing side's work rate relative to the back-off run. With --share-core every rank
-// is pinned to core 0, so the waiter competes with the computing rank for one core, as when
-// both programs share a node's cores. Last, the cost of the exchange itself: round trips of
-// N states (DEM -> fluid) and N loads (fluid -> DEM) with no computation in between.
+// the computing rank's own CPU/wall (its share of a core: on a busy machine the waiter can
+// only take a similar share) and its work rate relative to the back-off run. With --share-core
+// every rank is pinned to core 0, so the waiter competes with the computing rank for one core, as
+// when both programs share a node's cores. Last, the cost of the exchange itself: round trips of N
+// states (DEM -> fluid) and N loads (fluid -> DEM) with no computation in between.
 #include <mpi.h>
 #include <sched.h>
 #include <sys/resource.h>
@@ -162,12 +163,12 @@ int main(int argc, char** argv) {
     std::printf(
         "coupler_idle_bench: %d computing rank(s), %d waiting rank(s), %.1f s of compute%s\n",
         first_of_other, size - first_of_other, seconds, share_core ? ", all ranks on core 0" : "");
-    std::printf("%-9s %12s %12s %10s %22s\n", "wait", "wall s", "CPU s", "CPU/wall",
-                "compute work (rel.)");
+    std::printf("%-9s %10s %10s %10s %18s %20s\n", "wait", "wall s", "CPU s", "CPU/wall",
+                "computer CPU/wall", "compute work (rel.)");
     for (int m = 0; m < 2; ++m)
-      std::printf("%-9s %12.3f %12.3f %9.1f%% %22.3f\n", names[m], wait_stats[2 * m],
+      std::printf("%-9s %10.3f %10.3f %9.1f%% %17.1f%% %20.3f\n", names[m], wait_stats[2 * m],
                   wait_stats[2 * m + 1], 100.0 * wait_stats[2 * m + 1] / wait_stats[2 * m],
-                  work[m] / work[0]);
+                  100.0 * res[m].cpu / res[m].wall, work[m] / work[0]);
   }
   // Coupling overhead on its own: round trips with no computation on either side.
   for (int m = 0; m < 2; ++m) {
