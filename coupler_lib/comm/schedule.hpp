@@ -2,10 +2,11 @@
 // The time schedule of a run, in one place: DEM substeps per fluid step, number of steps,
 // and which steps exchange packets, write output and write checkpoints.
 //
-// Substeps (paper, appendix "coupling"): the DEM advances n_DEM substeps of dt_DEM per fluid
-// step of dt_LBM with the hydrodynamic load held constant. n_DEM = ceil(dt_LBM / dt_DEM), and
-// the substep actually used is dt_LBM / n_DEM, so it never exceeds the DEM step asked for;
-// if dt_DEM >= dt_LBM the DEM uses dt_LBM (n_DEM = 1).
+// Substeps (paper, section "OpenLB-LAMMPS coupling"): the DEM advances n_DEM substeps of
+// dt_DEM per fluid step of dt_LBM with the hydrodynamic load held constant. The paper takes
+// n_DEM = dt_LBM / dt_DEM as a whole number; here n_DEM = ceil(dt_LBM / dt_DEM) and the
+// substep actually used is dt_LBM / n_DEM, so it never exceeds the DEM step asked for. If
+// dt_DEM >= dt_LBM the DEM uses dt_LBM (n_DEM = 1), as in the paper.
 //
 // The outer step is the fluid step when the scene has a fluid, else the DEM step. Outputs and
 // checkpoints fall on exchange steps, so both programs are at the same time when they write.
