@@ -65,6 +65,13 @@ class BodyField {
   const PorousField<T>& field() const { return field_; }
   const Subdomain& subdomain() const { return sub_; }
 
+  // Largest distance (m) from a body's centre at which shape `shape` can give a node d < 1.
+  // The coupler must deliver a body to every rank whose stored box (interior cells plus
+  // the ghost layer) comes within this distance of the body's centre (minimum image).
+  double reach(std::int32_t shape) const {
+    return shapes_.at(static_cast<std::size_t>(shape)).support_radius();
+  }
+
   // Body index in field().body / field().bodies of a body id, -1 if not present.
   std::int32_t slot_of(std::int64_t id) const;
   // Porosity d_k of one body alone at a local cell (what the two-body rule combines).

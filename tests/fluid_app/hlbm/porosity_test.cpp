@@ -283,3 +283,35 @@ TEST(Porosity, SiStatesAreConvertedWithTheUnitConverterAndOrigin) {
 
 }  // namespace
 }  // namespace lbdem::hlbm
+
+namespace lbdem::hlbm {
+namespace {
+
+TEST(Porosity, ReachBoundsThePorousSupport) {
+  // Every node with d < 1 lies within reach() of the centre, and reach() is tight enough
+  // for routing (less than two cells beyond the surface).
+  const Shape s = test::cube(8, 0.5);
+  const Subdomain sub = test::whole(24);
+  PorousField<double> field;
+  BodyField<double> bodies({&s, 1}, sub, test::unit_frame(), field);
+  const Eigen::Vector3d x(12.3, 11.8, 12.1);
+  const Eigen::Quaterniond q(Eigen::AngleAxisd(0.9, Eigen::Vector3d(1, 1, 1).normalized()));
+  const BodyState st = test::state(0, x, q);
+  bodies.update({&st, 1});
+  double farthest = 0;
+  for (int z = 0; z <= 25; ++z)
+    for (int y = 0; y <= 25; ++y)
+      for (int xx = 0; xx <= 25; ++xx)
+        if (field.d[static_cast<std::size_t>(sub.box.index(xx, y, z))] < 1.0f)
+          farthest = std::max(
+              farthest,
+              (Eigen::Vector3d(sub.position(0, xx), sub.position(1, y), sub.position(2, z)) - x)
+                  .norm());
+  std::printf("farthest porous node %.3f cells, reach %.3f, half diagonal %.3f\n", farthest,
+              bodies.reach(0), 4 * std::sqrt(3.0));
+  EXPECT_LE(farthest, bodies.reach(0));
+  EXPECT_LT(bodies.reach(0), 4 * std::sqrt(3.0) + 2.0);
+}
+
+}  // namespace
+}  // namespace lbdem::hlbm
