@@ -38,7 +38,7 @@ TEST(SolidGeometry, EllipsoidDistanceMatchesSampling) {
   const auto samples = ellipsoid_samples(e, 500);
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-1.3, 1.3);
-  for (int t = 0; t < 40; ++t) {
+  for (int t = 0; t < 15; ++t) {
     const Eigen::Vector3d p(u(rng), 0.7 * u(rng), 0.5 * u(rng));
     const double exact = g.distance_to_surface(p);
     const double sampled = sampled_distance(samples, p);
