@@ -39,6 +39,7 @@ DemCoupler::DemCoupler(MPI_Comm side, std::unique_ptr<DemTransport> transport)
 DemCoupler::~DemCoupler() = default;
 
 void DemCoupler::send_states(std::int64_t step, std::span<const BodyState> owned) {
+  const ScopedCouplingTimer timer(times_);
   sent_.assign(owned.begin(), owned.end());
   std::unordered_set<std::int64_t> ids;
   std::vector<std::vector<BodyState>> buckets(layout_.boxes.size());
@@ -63,6 +64,7 @@ void DemCoupler::send_states(std::int64_t step, std::span<const BodyState> owned
 }
 
 std::vector<BodyLoad> DemCoupler::receive_loads(std::int64_t step) {
+  const ScopedCouplingTimer timer(times_);
   if (answered_)
     throw std::runtime_error("receive_loads(" + std::to_string(step) +
                              ") without a send_states before it: each send_states is answered "
@@ -72,6 +74,12 @@ std::vector<BodyLoad> DemCoupler::receive_loads(std::int64_t step) {
   std::vector<BodyLoad> loads = reduce_loads(sent_, transport_->receive_loads(step), step);
   if (recorder_) recorder_->loads(step, loads);
   return loads;
+}
+
+CouplingTimes DemCoupler::times() const {
+  CouplingTimes t = times_;
+  t.idle_s = transport_->waited();
+  return t;
 }
 
 }  // namespace lbdem

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "coupler_lib/app/run_app.hpp"
+#include "coupler_lib/comm/coupling_times.hpp"
 #include "coupler_lib/comm/packets.hpp"
 #include "coupler_lib/comm/recorder.hpp"
 #include "coupler_lib/comm/routing.hpp"
@@ -43,11 +44,14 @@ class DemCoupler {
 
   // The decomposition the fluid side announced (or the recorded one in a replay).
   const FluidLayout& fluid_layout() const { return layout_; }
+  // Time spent in this coupler so far, and how much of it was waiting for the fluid.
+  CouplingTimes times() const;
 
  private:
   DemCoupler(MPI_Comm side, std::unique_ptr<DemTransport> transport);
 
   std::unique_ptr<DemTransport> transport_;
+  CouplingTimes times_;
   std::unique_ptr<Recorder> recorder_;
   MPI_Comm side_;
   FluidLayout layout_;

@@ -1,5 +1,7 @@
 #include "coupler_lib/comm/exchange.hpp"
 
+#include <chrono>
+
 namespace lbdem {
 
 int remote_size(MPI_Comm inter) {
@@ -10,16 +12,18 @@ int remote_size(MPI_Comm inter) {
 
 std::vector<std::byte> exchange_bytes(MPI_Comm inter, const std::vector<std::byte>& send,
                                       const std::vector<int>& send_counts,
-                                      std::vector<int>& recv_counts, WaitMode mode,
-                                      const std::function<void()>& between_tests) {
+                                      std::vector<int>& recv_counts, const ExchangeWait& wait) {
   const int n = remote_size(inter);
   if (static_cast<int>(send_counts.size()) != n)
     throw std::invalid_argument("exchange: " + std::to_string(send_counts.size()) +
                                 " send buckets for " + std::to_string(n) + " remote ranks");
   recv_counts.assign(static_cast<size_t>(n), 0);
   MPI_Request req;
+  const auto t0 = std::chrono::steady_clock::now();
   MPI_Ialltoall(send_counts.data(), 1, MPI_INT, recv_counts.data(), 1, MPI_INT, inter, &req);
-  wait_request(req, mode, between_tests);
+  wait_request(req, wait.mode, wait.between_tests);
+  if (wait.waited_s)
+    *wait.waited_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   std::vector<int> sdispl(static_cast<size_t>(n)), rdispl(static_cast<size_t>(n));
   long long s = 0, r = 0;
@@ -38,7 +42,7 @@ std::vector<std::byte> exchange_bytes(MPI_Comm inter, const std::vector<std::byt
   void* rbuf = recv.empty() ? static_cast<void*>(&dummy) : recv.data();
   MPI_Ialltoallv(sbuf, send_counts.data(), sdispl.data(), MPI_BYTE, rbuf, recv_counts.data(),
                  rdispl.data(), MPI_BYTE, inter, &req);
-  wait_request(req, mode, between_tests);
+  wait_request(req, wait.mode, wait.between_tests);
   return recv;
 }
 

@@ -16,26 +16,37 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "coupler_lib/comm/wait.hpp"
 
 namespace lbdem {
 
+// How an exchange waits: the wait mode, a check to run between tests (World::check_peer), and
+// where to add the seconds spent waiting for the other program (the counts phase, which
+// completes only once the other program has called the exchange too).
+struct ExchangeWait {
+  ExchangeWait(WaitMode m = WaitMode::backoff) : mode(m) {}  // NOLINT: implicit on purpose
+  ExchangeWait(WaitMode m, std::function<void()> check, double* waited)
+      : mode(m), between_tests(std::move(check)), waited_s(waited) {}
+  WaitMode mode;
+  std::function<void()> between_tests;
+  double* waited_s = nullptr;
+};
+
 // Bytes version: `send_counts[i]` bytes of `send` (packed by rank) go to remote rank i.
 // Returns the received bytes packed by rank and fills `recv_counts`.
 std::vector<std::byte> exchange_bytes(MPI_Comm inter, const std::vector<std::byte>& send,
                                       const std::vector<int>& send_counts,
-                                      std::vector<int>& recv_counts, WaitMode mode,
-                                      const std::function<void()>& between_tests = {});
+                                      std::vector<int>& recv_counts, const ExchangeWait& wait);
 
 int remote_size(MPI_Comm inter);
 
 template <class Packet>
 std::vector<std::vector<Packet>> exchange(MPI_Comm inter,
                                           const std::vector<std::vector<Packet>>& send,
-                                          WaitMode mode,
-                                          const std::function<void()>& between_tests = {}) {
+                                          const ExchangeWait& wait) {
   static_assert(std::is_trivially_copyable_v<Packet>);
   std::vector<int> send_counts(send.size());
   size_t total = 0;
@@ -50,8 +61,7 @@ std::vector<std::vector<Packet>> exchange(MPI_Comm inter,
     at += n;
   }
   std::vector<int> recv_counts;
-  const std::vector<std::byte> got =
-      exchange_bytes(inter, flat, send_counts, recv_counts, mode, between_tests);
+  const std::vector<std::byte> got = exchange_bytes(inter, flat, send_counts, recv_counts, wait);
   std::vector<std::vector<Packet>> out(recv_counts.size());
   at = 0;
   for (size_t i = 0; i < recv_counts.size(); ++i) {

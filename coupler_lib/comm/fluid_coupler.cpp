@@ -54,6 +54,7 @@ FluidCoupler::FluidCoupler(MPI_Comm side, std::unique_ptr<FluidTransport> transp
 FluidCoupler::~FluidCoupler() = default;
 
 std::vector<BodyState> FluidCoupler::receive_states(std::int64_t step) {
+  const ScopedCouplingTimer timer(times_);
   const auto per_dem = transport_->receive_states(step);
   source_.clear();
   std::vector<BodyState> out;
@@ -84,6 +85,7 @@ std::vector<BodyState> FluidCoupler::receive_states(std::int64_t step) {
 }
 
 void FluidCoupler::send_loads(std::int64_t step, std::span<const BodyLoad> partials) {
+  const ScopedCouplingTimer timer(times_);
   if (answered_)
     throw std::runtime_error("send_loads(" + std::to_string(step) +
                              ") without a receive_states before it: each receive_states is "
@@ -107,6 +109,12 @@ void FluidCoupler::send_loads(std::int64_t step, std::span<const BodyLoad> parti
     buckets[static_cast<size_t>(it->second)].push_back(l);
   }
   transport_->send_loads(step, buckets);
+}
+
+CouplingTimes FluidCoupler::times() const {
+  CouplingTimes t = times_;
+  t.idle_s = transport_->waited();
+  return t;
 }
 
 }  // namespace lbdem

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "coupler_lib/app/run_app.hpp"
+#include "coupler_lib/comm/coupling_times.hpp"
 #include "coupler_lib/comm/packets.hpp"
 #include "coupler_lib/comm/routing.hpp"
 #include "coupler_lib/comm/transport.hpp"
@@ -55,12 +56,15 @@ class FluidCoupler {
 
   const FluidLayout& layout() const { return layout_; }  // every fluid rank's box
   int rank() const { return rank_; }
+  // Time spent in this coupler so far, and how much of it was waiting for the DEM.
+  CouplingTimes times() const;
 
  private:
   FluidCoupler(MPI_Comm side, std::unique_ptr<FluidTransport> transport,
                const FluidGeometry& geometry);
 
   std::unique_ptr<FluidTransport> transport_;
+  CouplingTimes times_;
   int rank_ = 0;
   FluidLayout layout_;
   std::int64_t step_ = -1;                        // step of the last receive_states

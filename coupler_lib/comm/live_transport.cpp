@@ -11,6 +11,10 @@ LiveFluidTransport::LiveFluidTransport(const World& world)
       dem_ranks_(world.peer().size),
       wait_(world.wait()) {}
 
+ExchangeWait LiveFluidTransport::how() {
+  return {wait_, [this] { world_->check_peer(); }, &waited_};
+}
+
 void LiveFluidTransport::announce(const FluidLayout& layout) {
   // Fluid rank 0 broadcasts to every DEM rank (intercommunicator broadcast: the sending
   // group names MPI_ROOT on its root and MPI_PROC_NULL elsewhere).
@@ -26,16 +30,20 @@ void LiveFluidTransport::announce(const FluidLayout& layout) {
 
 std::vector<std::vector<BodyState>> LiveFluidTransport::receive_states(std::int64_t) {
   return exchange(inter_, std::vector<std::vector<BodyState>>(static_cast<size_t>(dem_ranks_)),
-                  wait_, [this] { world_->check_peer(); });
+                  how());
 }
 
 void LiveFluidTransport::send_loads(std::int64_t,
                                     const std::vector<std::vector<BodyLoad>>& per_dem_rank) {
-  exchange(inter_, per_dem_rank, wait_, [this] { world_->check_peer(); });
+  exchange(inter_, per_dem_rank, how());
 }
 
 LiveDemTransport::LiveDemTransport(const World& world)
     : world_(&world), inter_(world.inter()), fluid_ranks_(world.peer().size), wait_(world.wait()) {}
+
+ExchangeWait LiveDemTransport::how() {
+  return {wait_, [this] { world_->check_peer(); }, &waited_};
+}
 
 FluidLayout LiveDemTransport::receive_layout() {
   unsigned long long n = 0;
@@ -50,12 +58,12 @@ FluidLayout LiveDemTransport::receive_layout() {
 
 void LiveDemTransport::send_states(std::int64_t, std::span<const BodyState>,
                                    const std::vector<std::vector<BodyState>>& per_fluid_rank) {
-  exchange(inter_, per_fluid_rank, wait_, [this] { world_->check_peer(); });
+  exchange(inter_, per_fluid_rank, how());
 }
 
 std::vector<std::vector<BodyLoad>> LiveDemTransport::receive_loads(std::int64_t) {
   return exchange(inter_, std::vector<std::vector<BodyLoad>>(static_cast<size_t>(fluid_ranks_)),
-                  wait_, [this] { world_->check_peer(); });
+                  how());
 }
 
 }  // namespace lbdem

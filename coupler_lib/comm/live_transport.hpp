@@ -2,6 +2,7 @@
 // The live transport: packets go to the other program over the intercommunicator
 // (exchange.hpp), waiting with the world's wait mode and watching for the other program
 // leaving early (World::check_peer).
+#include "coupler_lib/comm/exchange.hpp"
 #include "coupler_lib/comm/transport.hpp"
 #include "coupler_lib/comm/world.hpp"
 
@@ -15,8 +16,11 @@ class LiveFluidTransport : public FluidTransport {
   std::vector<std::vector<BodyState>> receive_states(std::int64_t step) override;
   void send_loads(std::int64_t step,
                   const std::vector<std::vector<BodyLoad>>& per_dem_rank) override;
+  double waited() const override { return waited_; }
 
  private:
+  ExchangeWait how();
+  double waited_ = 0;
   const World* world_;
   MPI_Comm inter_;
   int rank_;
@@ -32,8 +36,11 @@ class LiveDemTransport : public DemTransport {
   void send_states(std::int64_t step, std::span<const BodyState> owned,
                    const std::vector<std::vector<BodyState>>& per_fluid_rank) override;
   std::vector<std::vector<BodyLoad>> receive_loads(std::int64_t step) override;
+  double waited() const override { return waited_; }
 
  private:
+  ExchangeWait how();
+  double waited_ = 0;
   const World* world_;
   MPI_Comm inter_;
   int fluid_ranks_;

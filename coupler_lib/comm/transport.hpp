@@ -26,6 +26,8 @@ class FluidTransport {
   // This rank's partial loads, bucketed by the DEM rank that sent the body's state.
   virtual void send_loads(std::int64_t step,
                           const std::vector<std::vector<BodyLoad>>& per_dem_rank) = 0;
+  // Wall seconds spent waiting for the other program so far (0 in a replay).
+  virtual double waited() const { return 0; }
 };
 
 // The DEM side's view of the fluid program.
@@ -40,6 +42,8 @@ class DemTransport {
                            const std::vector<std::vector<BodyState>>& per_fluid_rank) = 0;
   // The partial loads each fluid rank sent back, by fluid rank.
   virtual std::vector<std::vector<BodyLoad>> receive_loads(std::int64_t step) = 0;
+  // Wall seconds spent waiting for the other program so far (0 in a replay).
+  virtual double waited() const { return 0; }
 };
 
 }  // namespace lbdem

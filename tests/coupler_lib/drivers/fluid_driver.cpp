@@ -85,7 +85,11 @@ int run(AppContext& ctx, const synthetic::DriverOptions& opt) {
   long long total = 0, mine = seen;
   MPI_Allreduce(&mine, &total, 1, MPI_LONG_LONG, MPI_SUM, ctx.side_comm);
   if (total < sched.steps) fail_check("too few bodies reached the fluid ranks to test anything");
-  ctx.log->info("fluid driver: {} steps, {} fluid ranks, all checks passed", sched.steps, ctx.size);
+  const CouplingTimes t = coupler->times();
+  ctx.log->info(
+      "fluid driver: {} steps, {} fluid ranks, all checks passed; coupling {:.4f} s in {} calls "
+      "(waiting {:.4f} s, exchange {:.4f} s)",
+      sched.steps, ctx.size, t.total_s, t.calls, t.idle_s, t.exchange_s());
   std::printf("fluid rank %d: %lld body states received and checked\n", ctx.rank,
               static_cast<long long>(seen));
   return 0;

@@ -1,0 +1,34 @@
+#pragma once
+// Where a program's coupling time goes, for the per-step breakdown of the benchmarks
+// (fluid / DEM / exchange / idle).
+#include <chrono>
+#include <cstdint>
+
+namespace lbdem {
+
+struct CouplingTimes {
+  std::int64_t calls = 0;  // coupler calls (receive_states, send_loads, ...)
+  double total_s = 0;      // wall seconds inside those calls
+  double idle_s = 0;       // of which: waiting for the other program
+
+  double exchange_s() const { return total_s - idle_s; }  // routing, packing, transfer, checks
+};
+
+// Adds the wall time of its scope to a CouplingTimes.
+class ScopedCouplingTimer {
+ public:
+  explicit ScopedCouplingTimer(CouplingTimes& t)
+      : t_(t), start_(std::chrono::steady_clock::now()) {}
+  ~ScopedCouplingTimer() {
+    t_.calls += 1;
+    t_.total_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+  ScopedCouplingTimer(const ScopedCouplingTimer&) = delete;
+  ScopedCouplingTimer& operator=(const ScopedCouplingTimer&) = delete;
+
+ private:
+  CouplingTimes& t_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace lbdem
