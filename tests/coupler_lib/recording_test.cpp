@@ -1,4 +1,5 @@
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstring>
@@ -43,12 +44,15 @@ std::vector<BodyLoad> loads(std::int64_t step, int n) {
   return v;
 }
 
+// Unique per process: several builds may run this test at the same time.
 std::string temp_file(const char* name) {
-  return (std::filesystem::temp_directory_path() / name).string();
+  return (std::filesystem::temp_directory_path() /
+          (std::string(name) + "." + std::to_string(::getpid()) + ".h5"))
+      .string();
 }
 
 TEST(Recording, RoundTripIsBitExact) {
-  const std::string path = temp_file("lbdem_recording_test.h5");
+  const std::string path = temp_file("lbdem_recording_test");
   RecordingInfo info;
   info.scene_hash = 0xfedcba9876543210ull;
   info.scene_file = "scene.yaml";
@@ -95,7 +99,7 @@ TEST(Recording, RoundTripIsBitExact) {
 
 TEST(Recording, MissingOrForeignFileIsReported) {
   EXPECT_THROW(RecordingReader("/nonexistent/lbdem.h5"), std::runtime_error);
-  const std::string path = temp_file("lbdem_not_a_recording.h5");
+  const std::string path = temp_file("lbdem_not_a_recording");
   {
     std::FILE* f = std::fopen(path.c_str(), "w");
     std::fputs("plain text", f);
