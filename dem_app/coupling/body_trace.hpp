@@ -1,0 +1,30 @@
+#pragma once
+// Per-body time series of a coupled run (CSV, rank 0 writes): time, id, centre of mass,
+// velocity, angular velocity, orientation and the hydrodynamic force and torque that acted
+// on the body during the last fluid step. This is what the validation checkers read.
+#include <mpi.h>
+
+#include <fstream>
+#include <span>
+#include <string>
+
+#include "coupler_lib/comm/packets.hpp"
+
+namespace lbdem {
+
+class BodyTrace {
+ public:
+  BodyTrace(const std::string& path, MPI_Comm comm);
+  // Collective: `states` and `loads` are this rank's owned bodies (loads may be empty at the
+  // first row); rank 0 gathers them and writes one row per body, sorted by id.
+  void write(double time, std::span<const BodyState> states, std::span<const BodyLoad> loads);
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+  MPI_Comm comm_;
+  int rank_ = 0;
+  std::ofstream out_;
+};
+
+}  // namespace lbdem

@@ -1,0 +1,103 @@
+#include "dem_app/coupling/coupled_dem.hpp"
+
+#include <filesystem>
+#include <memory>
+
+#include "coupler_lib/app/progress.hpp"
+#include "coupler_lib/comm/dem_coupler.hpp"
+#include "coupler_lib/comm/schedule.hpp"
+#include "coupler_lib/comm/world.hpp"
+#include "dem_app/body_output.hpp"
+#include "dem_app/coupling/body_trace.hpp"
+#include "dem_app/dem_run.hpp"
+#include "dem_app/dem_setup.hpp"
+#include "dem_app/lammps_engine.hpp"
+#include "dem_app/scene_shapes.hpp"
+
+namespace lbdem {
+
+namespace {
+
+// The DEM box must be periodic exactly where the fluid box is, or a body would leave one
+// side and not the other.
+void check_periodicity(const Scene& scene) {
+  for (int a = 0; a < 3; ++a) {
+    if (scene.dem->periodic[a] != scene.fluid->periodic(a))
+      throw SceneError(scene.file + ": dem.periodic and fluid.boundaries disagree along " +
+                       axis_name(a) + ": both sides must be periodic on the same axes");
+  }
+}
+
+}  // namespace
+
+int run_coupled_dem(AppContext& ctx) {
+  const Scene& scene = ctx.scene;
+  const bool replay = !ctx.cli.replay.empty();
+  World world;
+  if (!replay) world = connect(ctx);
+  check_periodicity(scene);
+
+  DemSetup setup = make_dem_setup(scene, build_scene_shapes(scene), true);
+  std::filesystem::path dir(setup.params.output.directory);
+  if (dir.is_relative()) dir = std::filesystem::path(scene.file).parent_path() / dir;
+  if (ctx.rank == 0) std::filesystem::create_directories(dir);
+  setup.lammps_log = (dir / (scene.name + "_lammps.log")).string();
+  validate_dem_setup(setup);
+  const Schedule schedule = make_schedule(scene, scene.fluid->units.dt, dem_time_step(setup));
+  setup.params.dt = schedule.dt_dem;  // an integer number of substeps per fluid step
+  if (ctx.rank == 0) {
+    ctx.log->info("DEM: {}", describe_engine_inputs(setup));
+    ctx.log->info("coupling: {} fluid steps of {:.4e} s, {} DEM substeps of {:.4e} s each",
+                  schedule.steps, schedule.dt, schedule.dem_substeps, schedule.dt_dem);
+  }
+  LammpsEngine engine(ctx.side_comm, setup);
+
+  // Weight is applied by LAMMPS (dem.gravity on the body mass); the fluid has no hydrostatic
+  // pressure gradient, so the buoyancy of the displaced fluid is added here explicitly.
+  const double rho_f = scene.fluid->density;
+  for (std::size_t id = 0; id < setup.bodies.size(); ++id) {
+    const double volume = setup.shapes[size_t(setup.bodies[id].shape)].mass.volume;
+    Eigen::Vector3d g(scene.dem->gravity[0], scene.dem->gravity[1], scene.dem->gravity[2]);
+    engine.set_extra_force(std::int64_t(id), -rho_f * volume * g);
+  }
+
+  std::unique_ptr<DemCoupler> coupler = replay ? std::make_unique<DemCoupler>(ctx, ctx.cli.replay)
+                                               : std::make_unique<DemCoupler>(world, scene);
+  std::unique_ptr<BodySnapshotWriter> snapshots;
+  std::unique_ptr<BodyTrace> trace;
+  if (schedule.output_interval > 0) {
+    snapshots = std::make_unique<BodySnapshotWriter>(dir.string(), scene.name, ctx.side_comm);
+    trace =
+        std::make_unique<BodyTrace>((dir / (scene.name + "_bodies.csv")).string(), ctx.side_comm);
+  }
+
+  Progress progress(ctx.log, scene.time.progress_interval, scene.time.end);
+  std::vector<BodyState> owned = engine.owned_states(0);
+  if (trace) {
+    trace->write(0.0, owned, {});
+    snapshots->write(owned, 0.0);
+  }
+  coupler->send_states(0, owned);
+  for (std::int64_t step = 1; step <= schedule.steps; ++step) {
+    const std::vector<BodyLoad> loads = coupler->receive_loads(step);
+    for (const BodyLoad& l : loads)
+      engine.set_load(l.id, Eigen::Vector3d(l.f[0], l.f[1], l.f[2]),
+                      Eigen::Vector3d(l.t[0], l.t[1], l.t[2]));
+    engine.run(schedule.dem_substeps);
+    owned = engine.owned_states(step);
+    const double time = double(step) * schedule.dt;
+    if (schedule.output_at(step) && trace) {
+      trace->write(time, owned, loads);
+      snapshots->write(owned, time);
+    }
+    coupler->send_states(step, owned);
+    progress.update(step, time);
+  }
+  if (ctx.rank == 0) {
+    ctx.log->info("coupled DEM run finished after {} fluid steps", schedule.steps);
+    if (trace) ctx.log->info("bodies: {} and {}", trace->path(), snapshots->xdmf_path());
+  }
+  return 0;
+}
+
+}  // namespace lbdem

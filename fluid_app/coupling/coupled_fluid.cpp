@@ -1,0 +1,96 @@
+#include "fluid_app/coupling/coupled_fluid.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "coupler_lib/comm/fluid_coupler.hpp"
+#include "coupler_lib/comm/world.hpp"
+#include "coupler_lib/shapes/build_shape.hpp"
+#include "fluid_app/coupling/settling_force.hpp"
+#include "fluid_app/fluid_run.hpp"
+#include "fluid_app/hlbm/body_field.hpp"
+#include "fluid_app/output/run_watch.hpp"
+
+namespace lbdem {
+
+namespace {
+
+std::vector<Shape> build_shapes(const Scene& scene) {
+  std::vector<Shape> shapes;
+  for (const auto& p : scene.shapes)
+    shapes.push_back(build_shape(p, shape_voxel_spacing(p, scene.fluid)));
+  return shapes;
+}
+
+FluidGeometry geometry_of(const Scene& scene, const LocalBox& box,
+                          const std::vector<Shape>& shapes) {
+  const FluidParams& f = *scene.fluid;
+  FluidGeometry g;
+  for (int a = 0; a < 3; ++a) {
+    g.mine.lo[a] = box.offset[a] * f.dx;
+    g.mine.hi[a] = (box.offset[a] + box.n[a]) * f.dx;
+    g.domain.lo[a] = 0;
+    g.domain.hi[a] = f.domain[a];
+    g.periodic[a] = f.periodic(a);
+  }
+  for (const auto& s : shapes) g.shape_radius.push_back(s.bounding_radius);
+  g.margin = stencil_margin(scene);
+  return g;
+}
+
+template <class T>
+int run_typed(AppContext& ctx) {
+  const Scene& scene = ctx.scene;
+  const bool replay = !ctx.cli.replay.empty();
+  // The handshake comes first so a wrong partner is reported before any heavy set-up.
+  World world;
+  if (!replay) world = connect(ctx);
+
+  const std::vector<Shape> shapes = build_shapes(scene);
+  FluidRun<T> run(ctx);
+  FluidSolver<T>& solver = run.solver();
+  RunWatch<T> watch(ctx, run);
+  const FluidGeometry geometry = geometry_of(scene, solver.box(), shapes);
+  std::unique_ptr<FluidCoupler> coupler =
+      replay ? std::make_unique<FluidCoupler>(ctx, ctx.cli.replay, geometry)
+             : std::make_unique<FluidCoupler>(world, geometry);
+
+  hlbm::Subdomain sub{solver.box(), geometry.periodic};
+  hlbm::LatticeFrame frame{Eigen::Vector3d::Zero(), scene.fluid->units};
+  hlbm::BodyField<T> bodies(shapes, sub, frame, solver.porous());
+  const SettlingForce settling = settling_force(scene, shapes);
+  if (settling.active) {
+    solver.set_feed_forward_force(settling.fluid_force_lattice);
+    ctx.log->info("{}", settling.description);
+  }
+
+  bodies.update(coupler->receive_states(0));
+  run.start();
+  while (!run.done() && !watch.stopped()) {
+    run.step();
+    const std::int64_t step = solver.steps();
+    const auto loads =
+        bodies.momentum_exchange([&](int i, CellIndex c) { return solver.population(i, c); }, step);
+    coupler->send_loads(step, loads);
+    if (watch.stopped()) break;
+    bodies.update(coupler->receive_states(step));
+  }
+  const int rc = watch.finish();
+  if (watch.stopped()) {
+    // The DEM side is waiting for loads that will never come: end the whole job. The
+    // diagnosis and the last good state were written by the stability watch.
+    throw SideError(
+        "the fluid became unstable (diagnosis above, last good state written); stopping dem_app");
+  }
+  ctx.log->info("coupled fluid run finished after {} steps", solver.steps());
+  return rc;
+}
+
+}  // namespace
+
+int run_coupled_fluid(AppContext& ctx) {
+  return ctx.scene.fluid->precision == "float" ? run_typed<float>(ctx) : run_typed<double>(ctx);
+}
+
+}  // namespace lbdem

@@ -1,0 +1,153 @@
+#!/usr/bin/env python3
+"""Validation checks of coupled scenes against published numbers.
+
+Each sub-command launches the scene through the real entry point (mpirun MPMD), reads the
+body trace the DEM side wrote, prints the result, the reference, the relative error and the
+wall time, appends a row to runs/validation/results.csv, and exits 1 when the error is above
+the tolerance given on the command line (the tolerance is the honest accuracy expected at
+that resolution; see README, "Validation").
+
+    validate_case.py terminal --build build --scene S --reference 0.048 --tolerance 0.1
+    validate_case.py peak     --build build --scene S --reference 0.0360 --tolerance 0.1
+    validate_case.py drag     --build build --scene S --phi 0.05 --tolerance 0.1
+    validate_case.py invariance --build build --scene S --ranks 1:1 3:2 --tolerance 1e-9
+    validate_case.py rotation --build build --scene S --max-tilt-change 2.0
+"""
+import argparse
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "analysis"))
+import coupled_case  # noqa: E402
+import references  # noqa: E402
+
+RESULTS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "runs", "validation",
+                       "results.csv")
+
+
+def report(case, scene, quantity, reference, result, wall, ranks, tolerance):
+    s, _ = coupled_case.scene_info(scene)
+    f = s.get("fluid", {})
+    size = min((sh.get("diameter") or sh.get("edge") or 0) for sh in s.get("shapes", [{}]))
+    res = size / f["dx"] if f and size else float("nan")
+    error = abs(result - reference) / abs(reference)
+    print(f"{case}: {quantity} = {result:.6g} (reference {reference:.6g}), relative error "
+          f"{100 * error:.2f} %, resolution {res:.3g} cells, tau {f.get('tau')}, ranks {ranks}, "
+          f"wall time {wall:.1f} s")
+    os.makedirs(os.path.dirname(RESULTS), exist_ok=True)
+    new = not os.path.exists(RESULTS)
+    with open(RESULTS, "a") as out:
+        if new:
+            out.write("case,resolution,tau,quantity,reference,result,error,wall_s,ranks\n")
+        out.write(f"{case},{res:.3g},{f.get('tau')},{quantity},{reference:.6g},{result:.6g},"
+                  f"{error:.4g},{wall:.1f},{ranks}\n")
+    if error > tolerance:
+        print(f"FAILED: error {100 * error:.2f} % above the tolerance {100 * tolerance:.2f} %")
+        return 1
+    return 0
+
+
+def launch(args, ranks):
+    fr, dr = (int(x) for x in ranks.split(":"))
+    wall, out = coupled_case.run(args.build, args.scene, fr, dr)
+    _, trace = coupled_case.scene_info(args.scene)
+    return wall, coupled_case.read_trace(trace)
+
+
+def settling_speeds(rows, axis="vz"):
+    return [(r["time"], -r[axis]) for r in rows]
+
+
+def cmd_terminal(args):
+    wall, bodies = launch(args, args.ranks)
+    speeds = settling_speeds(bodies[0])
+    t_end = speeds[-1][0]
+    tail = [v for t, v in speeds if t >= (1 - args.window) * t_end]
+    result = sum(tail) / len(tail)
+    return report(args.case or "terminal velocity", args.scene, "u_T (m/s)", args.reference, result,
+                  wall, args.ranks, args.tolerance)
+
+
+def cmd_peak(args):
+    wall, bodies = launch(args, args.ranks)
+    result = max(v for _, v in settling_speeds(bodies[0]))
+    return report(args.case or "peak velocity", args.scene, "u_max (m/s)", args.reference, result,
+                  wall, args.ranks, args.tolerance)
+
+
+def cmd_invariance(args):
+    runs = []
+    for ranks in args.ranks_list:
+        wall, bodies = launch(args, ranks)
+        runs.append((ranks, wall, bodies))
+    base_ranks, _, base = runs[0]
+    worst = 0.0
+    for ranks, wall, bodies in runs[1:]:
+        for bid, rows in base.items():
+            for a, b in zip(rows, bodies[bid]):
+                for k in ("x", "y", "z", "vx", "vy", "vz", "wx", "wy", "wz"):
+                    scale = max(abs(a[k]), 1e-12)
+                    worst = max(worst, abs(a[k] - b[k]) / scale if k in ("x", "y", "z")
+                                else abs(a[k] - b[k]) / max(abs(a["vz"]), 1e-12))
+        print(f"invariance: ranks {base_ranks} vs {ranks}: largest relative difference {worst:.3e}"
+              f" (wall {wall:.1f} s)")
+    if worst > args.tolerance:
+        print(f"FAILED: {worst:.3e} > {args.tolerance:.1e}")
+        return 1
+    return 0
+
+
+def tilt_deg(row):
+    # Angle between the body's z axis and the space z axis, from the quaternion (w, x, y, z).
+    w, x, y, z = row["qw"], row["qx"], row["qy"], row["qz"]
+    zz = 1 - 2 * (x * x + y * y)
+    return math.degrees(math.acos(max(-1.0, min(1.0, zz))))
+
+
+def cmd_rotation(args):
+    wall, bodies = launch(args, args.ranks)
+    rows = bodies[0]
+    t0, t1 = tilt_deg(rows[0]), tilt_deg(rows[-1])
+    wmax = max(math.sqrt(r["wx"] ** 2 + r["wy"] ** 2 + r["wz"] ** 2) for r in rows)
+    tmax = max(math.sqrt(r["tx"] ** 2 + r["ty"] ** 2 + r["tz"] ** 2) for r in rows)
+    print(f"rotation: tilt {t0:.2f} deg -> {t1:.2f} deg, max |omega| {wmax:.3e} rad/s, "
+          f"max |torque| {tmax:.3e} N m, wall {wall:.1f} s")
+    ok = tmax > 0 and wmax > 0
+    if args.expect == "keep":
+        ok = ok and abs(t1 - t0) <= args.max_tilt_change
+    else:
+        ok = ok and abs(t1 - t0) > args.max_tilt_change
+    print("rotation: " + ("as expected" if ok else "FAILED: not as expected") +
+          f" (expect {args.expect}, threshold {args.max_tilt_change} deg)")
+    return 0 if ok else 1
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
+    sub = p.add_subparsers(dest="cmd", required=True)
+    for name in ("terminal", "peak", "invariance", "rotation"):
+        q = sub.add_parser(name)
+        q.add_argument("--build", required=True)
+        q.add_argument("--scene", required=True)
+        q.add_argument("--case", default="")
+        q.add_argument("--tolerance", type=float, default=0.1)
+        if name == "invariance":
+            q.add_argument("--ranks-list", nargs="+", default=["1:1", "3:2"])
+        else:
+            q.add_argument("--ranks", default="1:1")
+        if name in ("terminal", "peak"):
+            q.add_argument("--reference", type=float, required=True)
+        if name == "terminal":
+            q.add_argument("--window", type=float, default=0.2,
+                           help="fraction of the run at its end to average over")
+        if name == "rotation":
+            q.add_argument("--expect", choices=["keep", "change"], default="change")
+            q.add_argument("--max-tilt-change", type=float, default=2.0)
+    args = p.parse_args()
+    return {"terminal": cmd_terminal, "peak": cmd_peak, "invariance": cmd_invariance,
+            "rotation": cmd_rotation}[args.cmd](args)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
