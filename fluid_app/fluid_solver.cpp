@@ -64,6 +64,7 @@ void run_kernel(Forcing m, bool sum, const KernelArgs<T>& a, const CellRange& r,
       run_kernel<T, Odd, Forcing::uniform>(sum, a, r, s);
       break;
     case Forcing::porous:
+    case Forcing::porous_one_body:  // a row-level choice the porous kernel makes itself
       run_kernel<T, Odd, Forcing::porous>(sum, a, r, s);
       break;
   }

@@ -25,6 +25,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "fluid_app/lattice/d3q19.hpp"
 #include "fluid_app/lattice/local_box.hpp"
@@ -34,7 +35,9 @@ namespace lbdem {
 
 // What the kernel computes besides plain BGK (a compile-time choice: a fluid-only scene
 // without force runs the plain variant and reads nothing else).
-enum class Forcing { none, uniform, porous };
+// `porous_one_body` is the kernel's own row variant for rows whose porous cells all belong to
+// one body (the common case): the body's parameters are broadcast instead of gathered.
+enum class Forcing { none, uniform, porous, porous_one_body };
 
 // Exact (fixed-point) sums of d rho u* and d rho, so that reductions are associative and the
 // controller's mean velocity is bit-identical for any rank count.
@@ -57,6 +60,7 @@ struct KernelArgs {
   const float* d = nullptr;
   const std::int32_t* body = nullptr;
   std::array<const T*, 9> table{};
+  std::array<T, 9> row_body{};     // porous_one_body: the row's body, same layout as `table`
   std::array<T, 3> period{};       // global lattice length on periodic axes
   std::array<T, 3> half_period{};  // period / 2; +infinity on non-periodic axes
 };
@@ -84,12 +88,17 @@ inline void collide_cell(const KernelArgs<T>& a, CellIndex cell, int x, int y, i
     uy += a.force[1] * inv_rho;
     uz += a.force[2] * inv_rho;
   }
-  if constexpr (Mode == Forcing::porous) {
+  if constexpr (Mode == Forcing::porous || Mode == Forcing::porous_one_body) {
     const T dd = T(a.d[cell]);
-    const int id = a.body[cell] + 1;
     T bt[9];
+    if constexpr (Mode == Forcing::porous) {
+      const int id = a.body[cell] + 1;
 #pragma GCC unroll 9
-    for (int m = 0; m < 9; ++m) bt[m] = a.table[m][id];
+      for (int m = 0; m < 9; ++m) bt[m] = a.table[m][id];
+    } else {
+#pragma GCC unroll 9
+      for (int m = 0; m < 9; ++m) bt[m] = a.row_body[m];
+    }
     // Node position in global lattice coordinates (node g at g + 1/2), minimum image.
     T r[3] = {T(a.box.offset[0] + x - 1) + T(0.5) - bt[0],
               T(a.box.offset[1] + y - 1) + T(0.5) - bt[1],
@@ -198,17 +207,30 @@ template <class T, bool Odd, Forcing Mode, bool Sum>
 void collide_stream(const KernelArgs<T>& args, const CellRange& r, FlowSums& sums) {
   // A private copy: the population stores cannot alias it, so its pointers and constants
   // stay in registers instead of being reloaded after every store (which blocks vectorizing).
-  const KernelArgs<T> a = args;
+  KernelArgs<T> a = args;
   const int len = r.hi[0] - r.lo[0];
   FlowSums s{};
   for (int z = r.lo[2]; z < r.hi[2]; ++z) {
     for (int y = r.lo[1]; y < r.hi[1]; ++y) {
       if constexpr (Mode == Forcing::porous) {
-        const float* d = a.d + a.box.index(r.lo[0], y, z);
+        const CellIndex row = a.box.index(r.lo[0], y, z);
+        const float* d = a.d + row;
         int solid = 0;
         for (int k = 0; k < len; ++k) solid += d[k] < 1.0f ? 1 : 0;
         if (solid == 0) {
           detail::collide_row<T, Odd, Forcing::uniform, Sum>(a, r.lo[0], len, y, z, s);
+          continue;
+        }
+        const std::int32_t* body = a.body + row;
+        std::int32_t lo = std::numeric_limits<std::int32_t>::max(), hi = -2;
+        for (int k = 0; k < len; ++k) {
+          const bool p = d[k] < 1.0f;
+          lo = p && body[k] < lo ? body[k] : lo;
+          hi = p && body[k] > hi ? body[k] : hi;
+        }
+        if (lo == hi) {
+          for (int m = 0; m < 9; ++m) a.row_body[m] = a.table[m][lo + 1];
+          detail::collide_row<T, Odd, Forcing::porous_one_body, Sum>(a, r.lo[0], len, y, z, s);
           continue;
         }
       }
