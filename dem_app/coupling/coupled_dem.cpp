@@ -96,6 +96,9 @@ int run_coupled_dem(AppContext& ctx) {
   if (ctx.rank == 0) {
     ctx.log->info("coupled DEM run finished after {} fluid steps", schedule.steps);
     if (trace) ctx.log->info("bodies: {} and {}", trace->path(), snapshots->xdmf_path());
+    if (replay)
+      ctx.log->info("replay of {}: the states of all {} steps match the recording bit for bit",
+                    ctx.cli.replay, schedule.steps);
   }
   return 0;
 }

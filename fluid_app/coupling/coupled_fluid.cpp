@@ -84,6 +84,9 @@ int run_typed(AppContext& ctx) {
         "the fluid became unstable (diagnosis above, last good state written); stopping dem_app");
   }
   ctx.log->info("coupled fluid run finished after {} steps", solver.steps());
+  if (replay)
+    ctx.log->info("replay of {}: the loads of all {} steps match the recording bit for bit",
+                  ctx.cli.replay, solver.steps());
   return rc;
 }
 
