@@ -1,5 +1,6 @@
 // fluid_app: the lattice Boltzmann side of the co-simulation.
 #include "coupler_lib/app/run_app.hpp"
+#include "fluid_app/coupling/coupled_fluid.hpp"
 #include "fluid_app/fluid_run.hpp"
 
 int main(int argc, char** argv) {
@@ -13,5 +14,8 @@ int main(int argc, char** argv) {
                         lbdem::describe_resolved(ctx.scene));
         if (ctx.scene.fluid) lbdem::log_fluid_setup(ctx, *ctx.scene.fluid);
       },
-      [](lbdem::AppContext& ctx) { return lbdem::run_fluid_scene(ctx); });
+      [](lbdem::AppContext& ctx) {
+        if (ctx.scene.coupled()) return lbdem::run_coupled_fluid(ctx);
+        return lbdem::run_fluid_scene(ctx);
+      });
 }
