@@ -1,6 +1,7 @@
 // dem_app: the discrete element side of the co-simulation (LAMMPS as a library). A scene
 // without a fluid section runs here alone; see dem_app/dem_run.hpp.
 #include "coupler_lib/app/run_app.hpp"
+#include "dem_app/coupling/coupled_dem.hpp"
 #include "dem_app/dem_run.hpp"
 #include "dem_app/scene_shapes.hpp"
 
@@ -17,10 +18,11 @@ int main(int argc, char** argv) {
                         lbdem::describe_resolved(ctx.scene), lbdem::describe_engine_inputs(setup));
       },
       [](lbdem::AppContext& ctx) {
+        if (ctx.scene.coupled()) return lbdem::run_coupled_dem(ctx);
         if (ctx.scene.fluid)
           throw lbdem::SceneError(ctx.scene.file +
-                                  ": the scene has a fluid section; dem_app runs alone only "
-                                  "for DEM-only scenes (coupled runs need the coupling driver)");
+                                  ": the scene has a fluid section but no bodies: run it with "
+                                  "fluid_app alone");
         return lbdem::run_dem_only(ctx);
       });
 }
