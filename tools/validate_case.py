@@ -98,6 +98,75 @@ def cmd_invariance(args):
     return 0
 
 
+def tail_mean(rows, key, window):
+    t_end = rows[-1]["time" if "time" in rows[-1] else "time_s"]
+    tk = "time" if "time" in rows[-1] else "time_s"
+    tail = [r[key] for r in rows if r[tk] >= (1 - window) * t_end]
+    return sum(tail) / len(tail)
+
+
+def cmd_drag(args):
+    """Simple cubic array: K = F_t / (6 pi mu a U) against Sangani & Acrivos (Hasimoto too).
+
+    U is the superficial velocity, the mean over all nodes of the fluid's series (inside the
+    body the body's velocity, zero here). F_t, the drag per sphere including the pressure
+    part the paper calls buoyancy, is rho g_f L^3: at steady state the sphere must take all
+    the momentum the body force puts into the box. The momentum exchange on the sphere F_d
+    only sees the force on the fluid outside its surface, F_d ~ rho g_f (1 - phi) L^3, hence
+    the paper's F_t = F_d / (1 - phi); both are printed, with the balance F_d / (rho g V_f).
+    """
+    wall, bodies = launch(args, args.ranks)
+    s, _ = coupled_case.scene_info(args.scene)
+    f = s["fluid"]
+    series = coupled_case.read_series(coupled_case.fluid_series_path(args.scene))
+    axis = max(range(3), key=lambda k: abs(f["body_force"][k]))
+    g = abs(f["body_force"][axis])
+    rho, mu = f["density"], f["density"] * f["viscosity"]
+    box = f["domain"][0] * f["domain"][1] * f["domain"][2]
+    a = s["shapes"][0]["diameter"] / 2
+    phi = 4.0 / 3.0 * math.pi * a**3 / box
+    u = abs(tail_mean(series, "mean_u" + "xyz"[axis] + "_m_s", args.window))
+    fd = abs(tail_mean(bodies[0], "f" + "xyz"[axis], args.window))
+    f_box = rho * g * box
+    f_fluid = f_box * (1 - phi)
+    stokes = 6 * math.pi * mu * a * u
+    k_sa, k_h = references.sangani_acrivos_k(phi), references.hasimoto_k(phi)
+    print(f"drag: phi = {phi:.4f}, superficial U = {u:.6g} m/s, Re = {2 * a * u / f['viscosity']:.3g}")
+    print(f"drag: force on the sphere F_d = {fd:.6g} N; force applied to the fluid: whole box "
+          f"rho g L^3 = {f_box:.6g} N, fluid part rho g (1-phi) L^3 = {f_fluid:.6g} N; "
+          f"balance F_d / (rho g (1-phi) L^3) = {fd / f_fluid:.4f}")
+    first = bodies[0][len(bodies[0]) // 2]["f" + "xyz"[axis]]
+    print(f"drag: F_d at mid-run {abs(first):.6g} N, at the end {fd:.6g} N (drift "
+          f"{100 * (fd - abs(first)) / abs(first):.2f} %)")
+    print(f"drag: K from F_t = rho g L^3: {f_box / stokes:.4f}; from F_t = F_d/(1-phi): "
+          f"{fd / (1 - phi) / stokes:.4f}; Sangani-Acrivos {k_sa:.4f}, Hasimoto {k_h:.4f} "
+          f"(error vs Hasimoto {100 * abs(f_box / stokes - k_h) / k_h:.2f} %)")
+    return report(args.case or f"drag array phi={phi:.3g}", args.scene, "K", k_sa,
+                  f_box / stokes, wall, args.ranks, args.tolerance)
+
+
+def cmd_spin(args):
+    """Sphere held spinning at Omega in fluid at rest: torque against Stokes' 8 pi mu a^3 Omega.
+
+    The periodic images change it by O(phi) (rotlet sums); the box is chosen with phi < 1 %.
+    """
+    wall, bodies = launch(args, args.ranks)
+    s, _ = coupled_case.scene_info(args.scene)
+    f = s["fluid"]
+    mu = f["density"] * f["viscosity"]
+    a = s["shapes"][0]["diameter"] / 2
+    w = s["bodies"][0]["angular_velocity"]
+    axis = max(range(3), key=lambda k: abs(w[k]))
+    torque = -tail_mean(bodies[0], "t" + "xyz"[axis], args.window)
+    w_end = bodies[0][-1]["w" + "xyz"[axis]]
+    box = f["domain"][0] * f["domain"][1] * f["domain"][2]
+    print(f"spin: Omega = {w[axis]:.6g} rad/s (at the end {w_end:.6g}), a = {a:.4g} m, "
+          f"phi = {4 * math.pi * a**3 / 3 / box:.4f}, Re = Omega a^2 / nu = "
+          f"{abs(w[axis]) * a * a / f['viscosity']:.3g}")
+    return report(args.case or "rotating sphere torque", args.scene, "torque (N m)",
+                  8 * math.pi * mu * a**3 * w[axis], torque, wall, args.ranks, args.tolerance)
+
+
 def tilt_deg(row):
     # Angle between the body's z axis and the space z axis, from the quaternion (w, x, y, z).
     w, x, y, z = row["qw"], row["qx"], row["qy"], row["qz"]
@@ -126,7 +195,7 @@ def cmd_rotation(args):
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     sub = p.add_subparsers(dest="cmd", required=True)
-    for name in ("terminal", "peak", "invariance", "rotation"):
+    for name in ("terminal", "peak", "invariance", "rotation", "drag", "spin"):
         q = sub.add_parser(name)
         q.add_argument("--build", required=True)
         q.add_argument("--scene", required=True)
@@ -138,7 +207,7 @@ def main():
             q.add_argument("--ranks", default="1:1")
         if name in ("terminal", "peak"):
             q.add_argument("--reference", type=float, required=True)
-        if name == "terminal":
+        if name in ("terminal", "drag", "spin"):
             q.add_argument("--window", type=float, default=0.2,
                            help="fraction of the run at its end to average over")
         if name == "rotation":
@@ -146,7 +215,7 @@ def main():
             q.add_argument("--max-tilt-change", type=float, default=2.0)
     args = p.parse_args()
     return {"terminal": cmd_terminal, "peak": cmd_peak, "invariance": cmd_invariance,
-            "rotation": cmd_rotation}[args.cmd](args)
+            "rotation": cmd_rotation, "drag": cmd_drag, "spin": cmd_spin}[args.cmd](args)
 
 
 if __name__ == "__main__":

@@ -24,12 +24,15 @@ def run(build, scene, fluid_ranks=1, dem_ranks=1, extra_env=None, timeout=1800, 
     env = dict(os.environ)
     env.update({"OMPI_ALLOW_RUN_AS_ROOT": "1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM": "1"})
     env.update(extra_env or {})
-    fluid = os.path.join(build, "fluid_app", "fluid_app")
-    dem = os.path.join(build, "dem_app", "dem_app")
+    fluid = os.path.abspath(os.path.join(build, "fluid_app", "fluid_app"))
+    dem = os.path.abspath(os.path.join(build, "dem_app", "dem_app"))
+    scene = os.path.abspath(scene)
     cmd = mpirun() + ["-np", str(fluid_ranks), fluid, scene, ":", "-np", str(dem_ranks), dem, scene]
     start = time.monotonic()
+    # Run from the scene's folder: fluid.output.directory is relative to the working directory,
+    # dem.output.directory to the scene file; this way both mean the same place.
     proc = subprocess.run(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                          text=True, timeout=timeout)
+                          text=True, timeout=timeout, cwd=os.path.dirname(scene))
     wall = time.monotonic() - start
     if proc.returncode != 0:
         raise RuntimeError(f"{' '.join(cmd)} failed ({proc.returncode}):\n{proc.stdout[-4000:]}")
@@ -42,6 +45,20 @@ def scene_info(scene):
     out = s.get("dem", {}).get("output", {}).get("directory", ".")
     directory = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(scene)), out))
     return s, os.path.join(directory, s["name"] + "_bodies.csv")
+
+
+def fluid_series_path(scene):
+    """<fluid.output.directory>/<name>_series.csv (domain means, docs/fluid_io.md)."""
+    s, _ = scene_info(scene)
+    out = s["fluid"]["output"]["directory"]
+    directory = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(scene)), out))
+    return os.path.join(directory, s["name"] + "_series.csv")
+
+
+def read_series(path):
+    """List of rows (dicts of floats) of the fluid's domain-mean CSV."""
+    with open(path) as f:
+        return [{k: float(v) for k, v in row.items()} for row in csv.DictReader(f)]
 
 
 def read_trace(path):
