@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "fluid_app/fluid_solver.hpp"
+#include "fluid_app/hlbm/solver_binding.hpp"
 #include "tests/fluid_app/fluid_test_setup.hpp"
 #include "tests/fluid_app/hlbm/hlbm_fixtures.hpp"
 
@@ -19,14 +20,8 @@ namespace {
 using test::state;
 
 template <class T>
-Subdomain subdomain_of(const FluidSolver<T>& s, const FluidParams& p) {
-  return {s.box(), {p.periodic(0), p.periodic(1), p.periodic(2)}};
-}
-
-template <class T>
 Eigen::Vector3d ME_force(const BodyField<T>& bodies, const FluidSolver<T>& s) {
-  const BodyLoad l = bodies.momentum_exchange(
-      [&](int i, CellIndex c) { return s.population(i, c); }, s.steps())[0];
+  const BodyLoad l = bodies.momentum_exchange(populations_of(s), s.steps())[0];
   return {l.f[0], l.f[1], l.f[2]};
 }
 
