@@ -65,6 +65,8 @@ def cmd_terminal(args):
     t_end = speeds[-1][0]
     tail = [v for t, v in speeds if t >= (1 - args.window) * t_end]
     result = sum(tail) / len(tail)
+    print(f"terminal: mean over t >= {(1 - args.window) * t_end:.4g} s; speed {tail[0]:.5g} -> "
+          f"{tail[-1]:.5g} m/s across that window (a change means not yet terminal)")
     return report(args.case or "terminal velocity", args.scene, "u_T (m/s)", args.reference, result,
                   wall, args.ranks, args.tolerance)
 
@@ -85,13 +87,20 @@ def cmd_invariance(args):
     worst = 0.0
     for ranks, wall, bodies in runs[1:]:
         for bid, rows in base.items():
+            if len(bodies.get(bid, [])) != len(rows) or len(rows) < 2:
+                print(f"FAILED: ranks {ranks}: body {bid} has {len(bodies.get(bid, []))} trace "
+                      f"rows, ranks {base_ranks} {len(rows)}")
+                return 1
             for a, b in zip(rows, bodies[bid]):
                 for k in ("x", "y", "z", "vx", "vy", "vz", "wx", "wy", "wz"):
                     scale = max(abs(a[k]), 1e-12)
                     worst = max(worst, abs(a[k] - b[k]) / scale if k in ("x", "y", "z")
                                 else abs(a[k] - b[k]) / max(abs(a["vz"]), 1e-12))
         print(f"invariance: ranks {base_ranks} vs {ranks}: largest relative difference {worst:.3e}"
-              f" (wall {wall:.1f} s)")
+              f" over {len(base[0])} trace rows (wall {wall:.1f} s)")
+    first, last = base[0][0], base[0][-1]
+    print(f"invariance: body 0 from ({first['x']:.4g}, {first['y']:.4g}, {first['z']:.4g}) to "
+          f"({last['x']:.4g}, {last['y']:.4g}, {last['z']:.4g}) m (positions wrapped into the box)")
     if worst > args.tolerance:
         print(f"FAILED: {worst:.3e} > {args.tolerance:.1e}")
         return 1
