@@ -23,6 +23,16 @@ class References(unittest.TestCase):
         self.assertAlmostEqual(r.CUBE_SPHERICITY, 0.8060, delta=1e-4)
         self.assertAlmostEqual(r.cube_volume_equivalent_diameter(1.0), 1.2407, delta=1e-4)
 
+    def test_haider_levenspiel_cubes(self):
+        # The paper: Haider's formula predicts ~0.0437 m/s for the a = 0.283 mm cube.
+        d_v = r.cube_volume_equivalent_diameter(0.283e-3)
+        u = r.haider_levenspiel_velocity(d_v, r.CUBE_SPHERICITY, 1000.0, 2500.0, 1e-3)
+        self.assertAlmostEqual(u, 0.0437, delta=0.0002)
+
+    def test_periodic_sphere_mobility_dilute_limit(self):
+        self.assertAlmostEqual(r.periodic_sphere_mobility_k(1e-4), 1.0, delta=1e-3)
+        self.assertGreater(r.periodic_sphere_mobility_k(0.1), 1.3)
+
 
 if __name__ == "__main__":
     unittest.main()
