@@ -1,5 +1,8 @@
 #include "coupler_lib/app/run_app.hpp"
 
+#include <unistd.h>
+
+#include <atomic>
 #include <climits>
 #include <cstdio>
 #include <iostream>
@@ -7,6 +10,20 @@
 namespace lbdem {
 
 namespace {
+
+// The context of the program whose `run` (or `check`) is executing, null otherwise. This is
+// process-wide state by necessity: it is read by the MPI_Finalize interposer below, which a
+// library calls without any context.
+std::atomic<const AppContext*> running_app{nullptr};
+
+// Sets running_app for the lifetime of a callback.
+class RunningApp {
+ public:
+  explicit RunningApp(const AppContext& ctx) { running_app.store(&ctx); }
+  ~RunningApp() { running_app.store(nullptr); }
+  RunningApp(const RunningApp&) = delete;
+  RunningApp& operator=(const RunningApp&) = delete;
+};
 
 // Which application of an MPMD launch this process belongs to (0 when launched alone),
 // and how many applications there are.
@@ -106,6 +123,7 @@ int run_app(int argc, char** argv, const AppInfo& info,
 
   int rc = 0;
   try {
+    const RunningApp guard(ctx);
     if (ctx.cli.check) {
       check(ctx);
     } else {
@@ -136,3 +154,24 @@ int run_app(int argc, char** argv, const AppInfo& info,
 }
 
 }  // namespace lbdem
+
+// A library that meets an error it cannot throw may call MPI_Finalize and exit: LAMMPS built
+// without exceptions does so after every ERROR (Error::all). MPI_Finalize then waits for the
+// other program, which waits for this one's packets: the job would hang. While a run is in
+// progress a call to MPI_Finalize therefore aborts the whole job instead (PMPI interposition:
+// this definition takes the place of the MPI library's, which stays reachable as
+// PMPI_Finalize). Outside a run it finalizes as usual.
+extern "C" int MPI_Finalize() {
+  if (const lbdem::AppContext* ctx = lbdem::running_app.load()) {
+    // Every rank of a library's collective error path comes here; rank 0 speaks for them.
+    if (ctx->rank != 0) sleep(2);
+    std::fprintf(stderr,
+                 "[%s %d] error: MPI_Finalize was called in the middle of the run (LAMMPS "
+                 "does this after an ERROR: see its message above or in its log file); "
+                 "ending the job\n",
+                 ctx->info.side.c_str(), ctx->rank);
+    std::fflush(stderr);
+    MPI_Abort(MPI_COMM_WORLD, 1);
+  }
+  return PMPI_Finalize();
+}

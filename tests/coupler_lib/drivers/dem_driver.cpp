@@ -51,6 +51,13 @@ int run(AppContext& ctx, const synthetic::DriverOptions& opt) {
     if (step == opt.throw_at_step && ctx.rank == opt.throw_rank)
       throw std::runtime_error("synthetic failure on DEM rank " + std::to_string(ctx.rank) +
                                " at step " + std::to_string(step));
+    if (step == opt.finalize_at_step) {
+      std::printf("dem_driver: ERROR: synthetic library error at step %lld\n",
+                  static_cast<long long>(step));
+      std::fflush(stdout);
+      MPI_Finalize();
+      std::exit(1);
+    }
     std::vector<BodyState> owned;
     for (size_t k = 0; k < n; ++k) {
       const auto id = static_cast<std::int64_t>(step % 2 ? n - 1 - k : k);

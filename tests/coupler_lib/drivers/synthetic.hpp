@@ -23,10 +23,11 @@ namespace lbdem::synthetic {
 
 // Options a driver takes besides run_app's; they are removed from argv.
 struct DriverOptions {
-  std::int64_t throw_at_step = -1;  // throw a std::runtime_error at this step ...
-  int throw_rank = 0;               // ... on this rank
-  bool exit_at_start = false;       // leave before the handshake, as a crash would
-  bool finish_at_start = false;     // return normally without coupling (a program bug)
+  std::int64_t throw_at_step = -1;     // throw a std::runtime_error at this step ...
+  int throw_rank = 0;                  // ... on this rank
+  bool exit_at_start = false;          // leave before the handshake, as a crash would
+  std::int64_t finalize_at_step = -1;  // MPI_Finalize + exit(1) here, as LAMMPS's errors do
+  bool finish_at_start = false;        // return normally without coupling (a program bug)
   std::uint32_t announce_version = kProtocolVersion;
   std::int64_t perturb_step = -1;  // change one packet by one ulp at this step
   std::int64_t steps = -1;         // run this many steps instead of the schedule's
@@ -46,6 +47,8 @@ inline DriverOptions take_driver_options(int& argc, char** argv) {
       o.throw_at_step = std::stoll(value());
     else if (a == "--throw-rank")
       o.throw_rank = std::stoi(value());
+    else if (a == "--finalize-at-step")
+      o.finalize_at_step = std::stoll(value());
     else if (a == "--exit-at-start")
       o.exit_at_start = true;
     else if (a == "--finish-at-start")
