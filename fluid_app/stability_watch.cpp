@@ -1,10 +1,11 @@
 #include "fluid_app/stability_watch.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <utility>
 
-#include "fluid_app/output/domain_means.hpp"
 #include "fluid_app/output/field_file.hpp"
 #include "fluid_app/output/xdmf_file.hpp"
 
@@ -19,21 +20,28 @@ LocalScan scan_block(const MacroFields& f, double max_mach) {
            (i + b.lo[0]);
   };
   long long first = std::numeric_limits<long long>::max();
+  // Mach = sqrt(3 |u|^2): compare |u|^2 with max_mach^2 / 3, no root on the common path.
+  const double limit_u2 = max_mach * max_mach / 3.0;
+  double max_u2 = 0;
   for (int k = 0; k < b.n[2]; ++k)
     for (int j = 0; j < b.n[1]; ++j)
       for (int i = 0; i < b.n[0]; ++i) {
         const std::size_t c = b.index(i, j, k);
         const double rho = f.rho[c], ux = f.u[3 * c], uy = f.u[3 * c + 1], uz = f.u[3 * c + 2];
-        Instability kind = Instability::none;
-        const double mach = lattice_mach(ux, uy, uz);
+        const double u2 = ux * ux + uy * uy + uz * uz;
+        // Written so that NaN fails every comparison and leaves the fast path.
+        if (rho > 0 && rho <= std::numeric_limits<double>::max() && u2 <= limit_u2) {
+          max_u2 = std::max(max_u2, u2);
+          continue;
+        }
+        const double mach = std::sqrt(3.0 * u2);
+        Instability kind = Instability::mach;
         if (!std::isfinite(rho) || !std::isfinite(mach))
           kind = Instability::not_finite;
         else if (rho <= 0)
           kind = Instability::density;
-        else if (mach > max_mach)
-          kind = Instability::mach;
-        if (std::isfinite(mach) && mach > s.max_mach) s.max_mach = mach;
-        if (kind == Instability::none || kind < s.kind) continue;
+        if (std::isfinite(u2)) max_u2 = std::max(max_u2, u2);
+        if (kind < s.kind) continue;
         if (kind > s.kind) {
           s.kind = kind;
           s.bad_cells = 0;
@@ -51,6 +59,7 @@ LocalScan scan_block(const MacroFields& f, double max_mach) {
           s.mach = mach;
         }
       }
+  s.max_mach = std::sqrt(3.0 * max_u2);
   return s;
 }
 
@@ -83,15 +92,14 @@ int reporting_rank(const LocalScan& s, Instability kind, const FieldBlock& b, MP
 
 }  // namespace
 
-std::optional<StabilityFailure> StabilityWatch::check(long step, double time,
-                                                      const MacroFields& fields) {
+std::optional<StabilityFailure> StabilityWatch::check(long step, double time, MacroFields& fields) {
   const LocalScan s = scan_block(fields, params_.max_mach);
   int kind = static_cast<int>(s.kind);
   MPI_Allreduce(MPI_IN_PLACE, &kind, 1, MPI_INT, MPI_MAX, comm_);
   if (kind == static_cast<int>(Instability::none)) {
     double mach = s.max_mach;
     MPI_Allreduce(MPI_IN_PLACE, &mach, 1, MPI_DOUBLE, MPI_MAX, comm_);
-    last_good_ = fields;
+    std::swap(last_good_, fields);
     last_good_step_ = step;
     last_good_time_ = time;
     last_good_mach_ = mach;

@@ -2,8 +2,9 @@
 // The stability watch: every `interval` steps it scans the macroscopic state for non-finite
 // values, non-positive density and Mach above the scene's limit. All fluid ranks agree on the
 // outcome through reductions on the side communicator, so either every rank goes on or every
-// rank stops with the same diagnosis. A passing check keeps a copy of the state (density and
-// velocity, 4 numbers per node) so that a failing one can write the last good state to HDF5.
+// rank stops with the same diagnosis. A passing check keeps the state it checked (density and
+// velocity, 4 numbers per node; taken over by swapping buffers, not copied) so that a failing
+// one can write the last good state to HDF5.
 #include <mpi.h>
 
 #include <optional>
@@ -28,9 +29,12 @@ class StabilityWatch {
 
   bool due(long step) const { return params_.interval > 0 && step % params_.interval == 0; }
 
-  // Collective. nullopt: the state is fine and is now the last good one. Otherwise the same
-  // failure on every rank, after the last good state was written collectively.
-  std::optional<StabilityFailure> check(long step, double time, const MacroFields& fields);
+  // Collective. nullopt: the state is fine and becomes last_good(); `fields` is swapped with
+  // the previous last good state (its contents are then stale, to be refilled by the caller).
+  // Otherwise the same failure on every rank, after the last good state was written
+  // collectively; `fields` is left as it was.
+  std::optional<StabilityFailure> check(long step, double time, MacroFields& fields);
+  const MacroFields& last_good() const { return last_good_; }
 
  private:
   StabilityParams params_;

@@ -80,6 +80,7 @@ void RunWatch<T>::observe(const FluidSolver<T>& solver, const StepInfo& info) {
   const bool write = output_ && output_->due(step);
   if (!check && !write) return;
   fill_macro_fields(solver, fields_);
+  const MacroFields* current = &fields_;
   if (check) {
     failure_ = stability_->check(step, info.time, fields_);
     if (failure_) {
@@ -87,8 +88,9 @@ void RunWatch<T>::observe(const FluidSolver<T>& solver, const StepInfo& info) {
       if (ctx_.rank == 0) ctx_.log->error("{}", failure_->message);
       return;
     }
+    current = &stability_->last_good();  // the watch took the checked state over
   }
-  if (write) output_->write(step, info.time, fields_);
+  if (write) output_->write(step, info.time, *current);
 }
 
 template <class T>

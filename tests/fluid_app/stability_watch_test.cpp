@@ -79,9 +79,13 @@ TEST(StabilityWatch, FailingCheckWritesTheLastGoodState) {
   EXPECT_FALSE(w.due(25));
   FieldBlock box{{3, 2, 2}, {0, 0, 0}, {3, 2, 2}};
   MacroFields f = calm(box);
-  EXPECT_FALSE(w.check(10, 0.1, f));
+  MacroFields buffer = f;
+  EXPECT_FALSE(w.check(10, 0.1, buffer));
   f.rho[box.index(2, 1, 0)] = 1.25;  // still fine: becomes the last good state
-  EXPECT_FALSE(w.check(20, 0.2, f));
+  buffer = f;
+  EXPECT_FALSE(w.check(20, 0.2, buffer));
+  EXPECT_EQ(w.last_good().rho, f.rho);   // taken over, not copied
+  EXPECT_EQ(buffer.rho, calm(box).rho);  // the buffer now holds the previous good state
   EXPECT_FALSE(std::filesystem::exists(lg));
 
   MacroFields bad = f;

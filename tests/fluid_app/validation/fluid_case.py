@@ -16,6 +16,7 @@ import math
 import os
 import re
 import shlex
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -26,7 +27,10 @@ import numpy as np
 
 
 def run(args, scene, workdir):
-    cmd = shlex.split(args.launch) + [args.app, os.path.abspath(scene)]
+    # Output paths in a scene are relative to the scene file: run a copy inside `workdir`.
+    local = os.path.join(workdir, os.path.basename(scene))
+    shutil.copyfile(scene, local)
+    cmd = shlex.split(args.launch) + [args.app, local]
     p = subprocess.run(cmd, cwd=workdir, capture_output=True, text=True, timeout=300)
     return p.returncode, p.stdout, p.stderr
 
@@ -52,7 +56,7 @@ def cmd_validate(args, work):
     if len(lines) != 1:
         fail("expected one validation line", out, err)
     print(lines[0])
-    files = all_files(work)
+    files = [f for f in all_files(work) if f != os.path.basename(args.scene)]  # but the copy
     if files:
         fail(f"the scene asks for no output but files were written: {files}")
 
