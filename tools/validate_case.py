@@ -9,9 +9,10 @@ that resolution; see README, "Validation").
 
     validate_case.py terminal --build build --scene S --reference 0.048 --tolerance 0.1
     validate_case.py peak     --build build --scene S --reference 0.0360 --tolerance 0.1
-    validate_case.py drag     --build build --scene S --phi 0.05 --tolerance 0.1
-    validate_case.py invariance --build build --scene S --ranks 1:1 3:2 --tolerance 1e-9
-    validate_case.py rotation --build build --scene S --max-tilt-change 2.0
+    validate_case.py drag     --build build --scene S --tolerance 0.1
+    validate_case.py invariance --build build --scene S --ranks-list 1:1 3:2 --tolerance 1e-12
+    validate_case.py rotation --build build --scene S --expect broadside --max-tilt-change 20
+    validate_case.py spin     --build build --scene S --tolerance 0.1
 """
 import argparse
 import math
@@ -148,7 +149,8 @@ def cmd_drag(args):
     f_fluid = f_box * (1 - phi)
     stokes = 6 * math.pi * mu * a * u
     k_sa, k_h = references.sangani_acrivos_k(phi), references.hasimoto_k(phi)
-    print(f"drag: phi = {phi:.4f}, superficial U = {u:.6g} m/s, Re = {2 * a * u / f['viscosity']:.3g}")
+    re = 2 * a * u / f["viscosity"]
+    print(f"drag: phi = {phi:.4f}, superficial U = {u:.6g} m/s, Re = {re:.3g}")
     print(f"drag: force on the sphere F_d = {fd:.6g} N; force applied to the fluid: whole box "
           f"rho g L^3 = {f_box:.6g} N, fluid part rho g (1-phi) L^3 = {f_fluid:.6g} N; "
           f"balance F_d / (rho g (1-phi) L^3) = {fd / f_fluid:.4f}")
@@ -186,7 +188,7 @@ def cmd_spin(args):
 
 def tilt_deg(row):
     # Angle between the body's z axis and the space z axis, from the quaternion (w, x, y, z).
-    w, x, y, z = row["qw"], row["qx"], row["qy"], row["qz"]
+    x, y = row["qx"], row["qy"]
     zz = 1 - 2 * (x * x + y * y)
     return math.degrees(math.acos(max(-1.0, min(1.0, zz))))
 
