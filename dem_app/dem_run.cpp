@@ -64,10 +64,13 @@ int run_dem_only(AppContext& ctx) {
   if (energy_every > 0)
     energy = std::make_unique<EnergySeries>((dir / (scene.name + "_energy.csv")).string(),
                                             ctx.side_comm);
+  // At the output cadence, and always at the end.
   auto emit = [&](long step) {
-    if (snapshots && step % snap_every == 0)
+    const bool last = step == total;
+    if (snapshots && (step % snap_every == 0 || last))
       snapshots->write(engine.owned_states(step), engine.time());
-    if (energy && step % energy_every == 0) energy->write(engine.time(), engine.energies());
+    if (energy && (step % energy_every == 0 || last))
+      energy->write(engine.time(), engine.energies());
   };
 
   Progress progress(ctx.log, scene.time.progress_interval, scene.time.end);

@@ -123,6 +123,10 @@ void LammpsEngine::build() {
   // run uses `pre no` so it neither re-derives the bodies nor loses half a step of gravity.
   command("run 0 post no");
   first_step_ = step();
+  const auto* cols =
+      static_cast<const int*>(lammps_extract_compute(lmp_, "rl", LMP_STYLE_LOCAL, LMP_SIZE_COLS));
+  if (!cols || *cols != kRigidLocalCount)
+    throw std::runtime_error("compute rigid/local does not have the expected columns");
 
   // q(0)^-1 q_user(0) for each body, from its owner, summed into every rank's table.
   const size_t n = setup_.bodies.size();
