@@ -32,6 +32,16 @@ def case_name(args):
     return args.case or coupled_case.scene_info(args.scene)[0]["name"]
 
 
+def append_row(case, resolution, tau, quantity, reference, result, error, wall, ranks):
+    os.makedirs(os.path.dirname(RESULTS), exist_ok=True)
+    new = not os.path.exists(RESULTS)
+    with open(RESULTS, "a") as out:
+        if new:
+            out.write("case,resolution,tau,quantity,reference,result,error,wall_s,ranks\n")
+        out.write(f"{case},{resolution},{tau},{quantity},{reference},{result},{error},"
+                  f"{wall:.1f},{ranks}\n")
+
+
 def report(case, scene, quantity, reference, result, wall, ranks, tolerance):
     s, _ = coupled_case.scene_info(scene)
     f = s.get("fluid", {})
@@ -41,13 +51,8 @@ def report(case, scene, quantity, reference, result, wall, ranks, tolerance):
     print(f"{case}: {quantity} = {result:.6g} (reference {reference:.6g}), relative error "
           f"{100 * error:.2f} %, resolution {res:.3g} cells, tau {f.get('tau')}, ranks {ranks}, "
           f"wall time {wall:.1f} s")
-    os.makedirs(os.path.dirname(RESULTS), exist_ok=True)
-    new = not os.path.exists(RESULTS)
-    with open(RESULTS, "a") as out:
-        if new:
-            out.write("case,resolution,tau,quantity,reference,result,error,wall_s,ranks\n")
-        out.write(f"{case},{res:.3g},{f.get('tau')},{quantity},{reference:.6g},{result:.6g},"
-                  f"{error:.4g},{wall:.1f},{ranks}\n")
+    append_row(case, f"{res:.3g}", f.get("tau"), quantity, f"{reference:.6g}", f"{result:.6g}",
+               f"{error:.4g}", wall, ranks)
     if error > tolerance:
         print(f"FAILED: error {100 * error:.2f} % above the tolerance {100 * tolerance:.2f} %")
         return 1
@@ -110,6 +115,10 @@ def cmd_invariance(args):
     first, last = base[0][0], base[0][-1]
     print(f"invariance: body 0 from ({first['x']:.4g}, {first['y']:.4g}, {first['z']:.4g}) to "
           f"({last['x']:.4g}, {last['y']:.4g}, {last['z']:.4g}) m (positions wrapped into the box)")
+    s, _ = coupled_case.scene_info(args.scene)
+    append_row(case_name(args), "", s["fluid"]["tau"], "largest relative trace difference", "0",
+               f"{worst:.3g}", f"{worst:.3g}", sum(w for _, w, _ in runs),
+               " ".join(args.ranks_list))
     if worst > args.tolerance:
         print(f"FAILED: {worst:.3e} > {args.tolerance:.1e}")
         return 1
@@ -217,6 +226,9 @@ def cmd_rotation(args):
         ok = ok and t1 < t0 - args.max_tilt_change
     else:
         ok = ok and abs(t1 - t0) > args.max_tilt_change
+    s, _ = coupled_case.scene_info(args.scene)
+    append_row(case_name(args), "", s["fluid"]["tau"], "tilt (deg) start -> end",
+               f"expect {args.expect}", f"{t0:.1f} -> {t1:.1f}", "", wall, args.ranks)
     print("rotation: " + ("as expected" if ok else "FAILED: not as expected") +
           f" (expect {args.expect}, threshold {args.max_tilt_change} deg)")
     return 0 if ok else 1

@@ -13,6 +13,15 @@ DEFAULT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "
                        "validation", "results.csv")
 
 
+def error(text):
+    """Relative errors as percent; other entries (empty, an absolute difference) as they are."""
+    try:
+        value = float(text)
+    except ValueError:
+        return text
+    return f"{100 * value:.2f} %" if value >= 1e-6 else f"{value:.3g}"
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__)
     p.add_argument("csv", nargs="?", default=DEFAULT)
@@ -30,7 +39,7 @@ def main():
     print("|---|---|---|---|---|---|---|---|---|")
     for r in rows:
         print(f"| {r['case']} | {r['resolution']} | {r['tau']} | {r['quantity']} | "
-              f"{r['reference']} | {r['result']} | {100 * float(r['error']):.2f} % | "
+              f"{r['reference']} | {r['result']} | {error(r['error'])} | "
               f"{r['wall_s']} | {r['ranks']} |")
 
 
