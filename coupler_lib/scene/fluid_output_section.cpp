@@ -98,7 +98,11 @@ FluidOutputParams parse_fluid_output(Section& fluid, const UnitConverter& units,
                                      const std::array<int, 3>& cells) {
   FluidOutputParams p;
   if (auto o = fluid.optional_section("output", "field files and time series; absent: none")) {
-    p.directory = o->get<std::string>("directory", ".", "directory for all output files");
+    // Like every path in a scene, relative to the scene file's folder (so a scene's output
+    // lands in the same place whatever the working directory).
+    p.directory = resolve_scene_path(
+        o->file(), o->get<std::string>("directory", ".",
+                                       "directory for all output files (relative to the scene)"));
     if (auto f = o->optional_section("fields", "HDF5 + XDMF field files (ParaView)"))
       p.fields = parse_fields(*f, units, cells);
     if (auto s = o->optional_section("series", "CSV time series of domain means")) {

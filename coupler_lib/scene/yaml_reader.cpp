@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <sstream>
 
 namespace lbdem {
@@ -309,6 +310,14 @@ void Section::finish() const {
                      (hint.empty() ? "" : " (did you mean '" + hint + "'?)") +
                      "; known keys here: " + join(known));
   }
+}
+
+std::string resolve_scene_path(const std::string& scene_file, const std::string& path) {
+  const std::filesystem::path p(path);
+  if (p.is_absolute()) return path;
+  const std::filesystem::path resolved =
+      (std::filesystem::path(scene_file).parent_path() / p).lexically_normal();
+  return resolved.empty() ? std::string(".") : resolved.string();
 }
 
 std::string did_you_mean(std::string_view word, const std::vector<std::string>& candidates) {

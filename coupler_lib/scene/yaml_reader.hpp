@@ -120,6 +120,9 @@ class Section {
   std::set<std::string, std::less<>> declared_;
 };
 
+// A path given in a scene, resolved against the folder of the scene file when relative.
+std::string resolve_scene_path(const std::string& scene_file, const std::string& path);
+
 // Closest word by edit distance, empty if nothing is close enough to suggest.
 std::string did_you_mean(std::string_view word, const std::vector<std::string>& candidates);
 
