@@ -29,8 +29,8 @@ def run(build, scene, fluid_ranks=1, dem_ranks=1, extra_env=None, timeout=1800, 
     scene = os.path.abspath(scene)
     cmd = mpirun() + ["-np", str(fluid_ranks), fluid, scene, ":", "-np", str(dem_ranks), dem, scene]
     start = time.monotonic()
-    # Run from the scene's folder: fluid.output.directory is relative to the working directory,
-    # dem.output.directory to the scene file; this way both mean the same place.
+    # Run from the scene's folder, so output paths mean the same place whether a build resolves
+    # them against the scene file (current) or the working directory (older fluid_app).
     proc = subprocess.run(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                           text=True, timeout=timeout, cwd=os.path.dirname(scene))
     wall = time.monotonic() - start
