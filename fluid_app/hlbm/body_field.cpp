@@ -12,9 +12,11 @@ namespace lbdem::hlbm {
 namespace {
 
 // A body whose surface moves by less than this (cells) since the last update is updated
-// incrementally: its porous band is about two cells wide, so no cell can go from interior
-// to fluid (or back) without being in the old or the new band.
-constexpr double kMaxIncrementalMove = 1.0;
+// incrementally. Its porous band is about 1.5 cells wide (|distance| < 3 h / 2 from the
+// voxel surface, h = dx / 2): no cell can go from interior to fluid (or back) without being
+// in the old or the new band, and every piece of the new band overlaps the old band.
+// Larger moves re-embed the body from scratch.
+constexpr double kMaxIncrementalMove = 0.5;
 
 }  // namespace
 
@@ -105,32 +107,6 @@ float BodyField<T>::evaluate(std::int32_t slot, std::uint32_t cell, std::vector<
   return d;
 }
 
-// Local coordinates of the stored copies of global node `global` along an axis: none, one,
-// or, on a periodic axis spanned by one rank, two (interior cell and ghost). Copies up to
-// two cells outside the stored range are clamped onto its edge and flagged: the surface
-// lies outside the box there, but its band may reach into it.
-template <class T>
-int BodyField<T>::local_images(int axis, long global, std::array<int, 3>& out,
-                               std::array<bool, 3>& clamped) const {
-  const LocalBox& box = sub_.box;
-  const int last = box.n[axis] + 1;
-  int count = 0;
-  auto add = [&](long l) {
-    if (l < -2 || l > last + 2) return;
-    out[count] = static_cast<int>(std::clamp(l, 0L, static_cast<long>(last)));
-    clamped[count] = l < 0 || l > last;
-    ++count;
-  };
-  if (!sub_.periodic[axis]) {
-    add(global - box.offset[axis] + 1);
-    return count;
-  }
-  const long n = box.global[axis];
-  const long w = ((global % n) + n) % n;
-  for (long m = -1; m <= 1 && count < 3; ++m) add(w + m * n - box.offset[axis] + 1);
-  return count;
-}
-
 // Local coordinates per axis within the support radius of a body (plus one cell).
 template <class T>
 std::array<std::vector<int>, 3> BodyField<T>::support(const Tracked& t) const {
@@ -180,68 +156,62 @@ void BodyField<T>::remove(std::int32_t slot, UpdateStats& stats) {
 
 // The surface-only update (paper: "only the nodes currently covered by a body and a
 // surrounding growth layer have to be revisited"). Candidates: the old band (cells that may
-// leave it), the nodes nearest to the body's mapped surface voxels (so band pieces entering
-// the box are found too) and, grown from these, every cell 26-connected to a new band cell.
-// Interior cells (d = 0) not reached keep their value: with a move below
-// kMaxIncrementalMove they cannot have left the interior without entering the new band.
+// leave it) and, grown from it through 26-neighbours, every cell connected to a new band
+// cell. With a move below kMaxIncrementalMove (a third of the ~1.5-cell band width) every
+// piece of the new band overlaps the old band, except pieces that enter the stored box from
+// outside: those contain a cell of the box's outermost layer, so when the body's support
+// crosses that layer its cells there are candidates too. Interior cells (d = 0) not reached
+// keep their value: they cannot have left the interior without entering the new band.
 template <class T>
 void BodyField<T>::follow_band(std::int32_t slot, std::vector<BandCell>& band, UpdateStats& stats) {
   const LocalBox& box = sub_.box;
   const Tracked& t = tracked_[static_cast<std::size_t>(slot)];
   queue_.clear();
-  for (const BandCell& b : t.band)
-    if (mark_[b.cell] != epoch_) {
-      const float d = evaluate(slot, b.cell, band, stats);
-      if (d > 0.0f && d < 1.0f) queue_.push_back(b.cell);
-    }
+  auto visit = [&](std::uint32_t c) {
+    if (mark_[c] == epoch_) return;
+    const float d = evaluate(slot, c, band, stats);
+    if (d > 0.0f && d < 1.0f) queue_.push_back(c);
+  };
+  for (const BandCell& b : t.band) visit(b.cell);
 
-  const ReferencePorosity& ref = shapes_[static_cast<std::size_t>(t.shape)];
-  const Eigen::Matrix3d to_lattice = t.rot / frame_.units.dx;
-  std::array<std::array<int, 3>, 3> img;
-  std::array<std::array<bool, 3>, 3> off;
-  std::array<int, 3> cnt;
-  for (const Eigen::Vector3d& s : ref.surface()) {
-    const Eigen::Vector3d p = t.x + to_lattice * s;
-    // Node g sits at g + 1/2: the nearest node to p is floor(p).
-    for (int a = 0; a < 3; ++a)
-      cnt[a] = local_images(a, static_cast<long>(std::floor(p[a])), img[a], off[a]);
-    for (int i = 0; i < cnt[0]; ++i)
-      for (int j = 0; j < cnt[1]; ++j)
-        for (int k = 0; k < cnt[2]; ++k) {
-          const int x = img[0][i], y = img[1][j], z = img[2][k];
-          if (off[0][i] || off[1][j] || off[2][k]) {
-            // The surface point lies just outside the box: the band cells it accounts for
-            // are within two cells of the clamped node (they need not touch a seed).
-            for (int dz = -2; dz <= 2; ++dz)
-              for (int dy = -2; dy <= 2; ++dy)
-                for (int dx = -2; dx <= 2; ++dx) {
-                  if (!sub_.stored(0, x + dx) || !sub_.stored(1, y + dy) || !sub_.stored(2, z + dz))
-                    continue;
-                  const auto c = static_cast<std::uint32_t>(box.index(x + dx, y + dy, z + dz));
-                  if (mark_[c] == epoch_) continue;
-                  const float d = evaluate(slot, c, band, stats);
-                  if (d > 0.0f && d < 1.0f) queue_.push_back(c);
-                }
-            continue;
-          }
-          const auto c = static_cast<std::uint32_t>(box.index(x, y, z));
-          if (mark_[c] == epoch_) continue;
-          evaluate(slot, c, band, stats);
-          queue_.push_back(c);  // seeds grow whatever their own porosity
+  const auto lists = support(t);
+  for (int a = 0; a < 3; ++a) {
+    const int last = box.n[a] + 1;
+    for (int face : {0, last}) {
+      if (lists[a].empty() || std::find(lists[a].begin(), lists[a].end(), face) == lists[a].end())
+        continue;
+      const int b = (a + 1) % 3, c = (a + 2) % 3;
+      for (int lb : lists[b])
+        for (int lc : lists[c]) {
+          std::array<int, 3> l;
+          l[a] = face;
+          l[b] = lb;
+          l[c] = lc;
+          visit(static_cast<std::uint32_t>(box.index(l[0], l[1], l[2])));
         }
+    }
   }
 
+  std::array<CellIndex, 27> offsets;
+  int n_off = 0;
+  for (int dz = -1; dz <= 1; ++dz)
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx)
+        if (dx != 0 || dy != 0 || dz != 0) offsets[n_off++] = box.shift(dx, dy, dz);
   for (std::size_t head = 0; head < queue_.size(); ++head) {
-    const auto l = box.coords(queue_[head]);
+    const std::uint32_t cell = queue_[head];
+    const auto l = box.coords(cell);
+    if (box.interior(l[0], l[1], l[2])) {  // all 26 neighbours are stored: no checks
+      for (int k = 0; k < n_off; ++k)
+        visit(static_cast<std::uint32_t>(CellIndex(cell) + offsets[k]));
+      continue;
+    }
     for (int dz = -1; dz <= 1; ++dz)
       for (int dy = -1; dy <= 1; ++dy)
         for (int dx = -1; dx <= 1; ++dx) {
           const int x = l[0] + dx, y = l[1] + dy, z = l[2] + dz;
           if (!sub_.stored(0, x) || !sub_.stored(1, y) || !sub_.stored(2, z)) continue;
-          const auto c = static_cast<std::uint32_t>(box.index(x, y, z));
-          if (mark_[c] == epoch_) continue;
-          const float d = evaluate(slot, c, band, stats);
-          if (d > 0.0f && d < 1.0f) queue_.push_back(c);
+          visit(static_cast<std::uint32_t>(box.index(x, y, z)));
         }
   }
 }

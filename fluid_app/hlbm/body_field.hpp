@@ -120,8 +120,6 @@ class BodyField {
   void follow_band(std::int32_t slot, std::vector<BandCell>& band, UpdateStats& stats);
   void combine(std::span<const std::int32_t> order);
   double displacement(const Tracked& t, const Tracked& next) const;
-  int local_images(int axis, long global, std::array<int, 3>& out,
-                   std::array<bool, 3>& clamped) const;
 };
 
 template <class T>

@@ -49,18 +49,11 @@ ReferencePorosity::ReferencePorosity(const Voxels& voxels) : h_(voxels.h) {
     for (int j = 0; j < n[1]; ++j)
       for (int i = 0; i < n[0]; ++i) {
         if (!solid(i, j, k)) continue;
-        const Eigen::Vector3d p = voxels.origin + h_ * Eigen::Vector3d(i, j, k);
-        // The smoothed porosity is < 1 up to two reference cells (face + trilinear) beyond
-        // a solid voxel centre along any axis.
-        support_radius_ = std::max(support_radius_, p.norm() + 2.0 * std::sqrt(3.0) * h_);
-        surface_radius_ = std::max(surface_radius_, p.norm() + 0.5 * std::sqrt(3.0) * h_);
-        constexpr int kFaces[6][3] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
-                                      {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
-        for (const auto& f : kFaces)
-          if (!solid(i + f[0], j + f[1], k + f[2])) {
-            surface_.push_back(p);
-            break;
-          }
+        const double r = (voxels.origin + h_ * Eigen::Vector3d(i, j, k)).norm();
+        // The smoothed porosity is < 1 up to sqrt(2) h (edge stencil point) plus sqrt(3) h
+        // (trilinear cell) from a solid voxel centre; 2 sqrt(3) h bounds both.
+        support_radius_ = std::max(support_radius_, r + 2.0 * std::sqrt(3.0) * h_);
+        surface_radius_ = std::max(surface_radius_, r + 0.5 * std::sqrt(3.0) * h_);
       }
 }
 

@@ -35,10 +35,6 @@ class ReferencePorosity {
   double spacing() const { return h_; }
   const Eigen::Vector3d& shift() const { return shift_; }
 
-  // Centres (shape frame, m) of the solid voxels that have a fluid 6-neighbour: they trace
-  // the surface and seed the search for the porous band after a move.
-  const std::vector<Eigen::Vector3d>& surface() const { return surface_; }
-
   // Largest distance of a point with porosity < 1 from the shape-frame origin (m).
   double support_radius() const { return support_radius_; }
   // Largest distance of a solid voxel corner from the shape-frame origin (m).
@@ -50,7 +46,6 @@ class ReferencePorosity {
   Eigen::Vector3d shift_ = Eigen::Vector3d::Zero();
   std::array<int, 3> m_{0, 0, 0};  // padded extents
   std::vector<float> smooth_;      // averaged porosity, padded lattice, x fastest
-  std::vector<Eigen::Vector3d> surface_;
   double support_radius_ = 0;
   double surface_radius_ = 0;
 
