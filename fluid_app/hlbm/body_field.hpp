@@ -44,7 +44,7 @@ enum class UpdateMode {
 struct UpdateStats {
   std::size_t evaluated = 0;           // porosity evaluations (mapped lookups)
   std::size_t band = 0;                // cells with 0 < d_k < 1, summed over bodies
-  std::size_t full_scans = 0;          // support scans (body new, jumped > 1 cell, or removed)
+  std::size_t full_scans = 0;          // support scans (body new, moved > 1/2 cell, or removed)
   std::size_t interior_conflicts = 0;  // cells inside two bodies (overlap deeper than the band)
 };
 
