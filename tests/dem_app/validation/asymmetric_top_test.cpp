@@ -1,7 +1,7 @@
 // Torque-free asymmetric top: a cuboid with three different moments spinning about a
 // non-principal axis. Kinetic energy and angular momentum are conserved; the body-frame
 // angular velocity follows Euler's equations I dw/dt = -w x I w, integrated here
-// independently (RK4, step 1e-6 s) from the same inertia tensor the engine was given.
+// independently (RK4, step 1e-5 s) from the same inertia tensor the engine was given.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -40,7 +40,7 @@ TEST(AsymmetricTop, ConservesEnergyAndMomentumAndFollowsEuler) {
   const Eigen::Vector3d l = rot * inertia * w_body;
 
   Eigen::Vector3d w = w0;
-  const double h = 1e-6;
+  const double h = 1e-5;
   const long n = std::lround(engine.time() / h);
   for (long i = 0; i < n; ++i) {
     const Eigen::Vector3d k1 = euler_rate(inertia, inverse, w);
