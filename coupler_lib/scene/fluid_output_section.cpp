@@ -63,7 +63,10 @@ StabilityParams parse_stability(Section& s) {
   p.max_mach = s.get<double>("max_mach", 0.3, "largest admissible |u|/c_s before the run stops",
                              Bounds{0.0, 1.7320508075688772, true, false});
   p.last_good = s.get<std::string>(
-      "last_good", "", "file for the last good state (default <scene name>_last_good.h5)");
+      "last_good", "",
+      "file for the last good state, relative to the scene (default: <output directory>/<scene "
+      "name>_last_good.h5)");
+  if (!p.last_good.empty()) p.last_good = resolve_scene_path(s.file(), p.last_good);
   s.finish();
   return p;
 }
@@ -97,6 +100,8 @@ ValidationParams parse_validation(Section& v) {
 FluidOutputParams parse_fluid_output(Section& fluid, const UnitConverter& units,
                                      const std::array<int, 3>& cells) {
   FluidOutputParams p;
+  // Without an output section the directory only receives a last good state, if ever.
+  p.directory = resolve_scene_path(fluid.file(), ".");
   if (auto o = fluid.optional_section("output", "field files and time series; absent: none")) {
     // Like every path in a scene, relative to the scene file's folder (so a scene's output
     // lands in the same place whatever the working directory).

@@ -59,7 +59,8 @@ struct ValidationParams {
 };
 
 struct FluidOutputParams {
-  std::string directory = ".";  // where every output file goes (created if missing)
+  std::string directory = ".";  // where every output file goes (created if missing); derived:
+                                // resolved against the scene file's folder
   std::optional<FieldOutputParams> fields;
   std::optional<SeriesOutputParams> series;
   StabilityParams stability;
