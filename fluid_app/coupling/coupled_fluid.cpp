@@ -62,7 +62,15 @@ int run_typed(AppContext& ctx) {
   hlbm::BodyField<T> bodies(shapes, sub, frame, solver.porous());
   const SettlingForce settling = settling_force(scene, shapes);
   if (settling.active) {
-    solver.set_feed_forward_force(settling.fluid_force_lattice);
+    // The controller (if any) adds its correction to this feed-forward; without it the
+    // compensating force simply adds to the scene's uniform body force.
+    if (scene.fluid->control.enabled) {
+      solver.set_feed_forward_force(settling.fluid_force_lattice);
+    } else {
+      auto force = solver.uniform_force();
+      for (int a = 0; a < 3; ++a) force[a] += settling.fluid_force_lattice[a];
+      solver.set_uniform_force(force);
+    }
     ctx.log->info("{}", settling.description);
   }
 
