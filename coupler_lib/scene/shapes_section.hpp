@@ -1,5 +1,5 @@
 #pragma once
-// The `shapes:` catalogue of a scene: what each body looks like (see docs/shapes.md).
+// The `shapes:` catalogue of a scene: what each body looks like (see the README).
 //
 //   shapes:
 //     - name: cube

@@ -3,7 +3,7 @@
 // delivers into the porosity field and body table the HLBM collision reads, keeping the
 // update cost proportional to the body surfaces, and integrates the hydrodynamic force and
 // torque on each body by momentum exchange (paper, appendix "Fluid-Structure Interaction").
-// See docs/hlbm.md for the method and the conventions.
+// See the README for the method and the conventions.
 //
 // Use (one per fluid rank):
 //   hlbm::BodyField<T> bodies(shapes, {solver.box(), periodic}, {origin, units},
@@ -132,7 +132,7 @@ std::vector<BodyLoad> BodyField<T>::momentum_exchange(const Populations& f,
     if (t.id < 0) continue;
     const auto slot = static_cast<std::int32_t>(s);
     // Interior cells (d = 0) never neighbour a cell outside the body (the smoothing is
-    // wider than a link, see docs/hlbm.md), so the body's band holds all its boundary links.
+    // wider than a link, see the README), so the body's band holds all its boundary links.
     LinkLoad sum;
     for (const BandCell& b : t.band) {
       const auto l = sub_.box.coords(b.cell);

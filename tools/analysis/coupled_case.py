@@ -48,7 +48,7 @@ def scene_info(scene):
 
 
 def fluid_series_path(scene):
-    """<fluid.output.directory>/<name>_series.csv (domain means, docs/fluid_io.md)."""
+    """<fluid.output.directory>/<name>_series.csv (domain means, the README)."""
     s, _ = scene_info(scene)
     out = s["fluid"]["output"]["directory"]
     directory = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(scene)), out))

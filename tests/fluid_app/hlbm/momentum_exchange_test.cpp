@@ -48,7 +48,7 @@ TEST(MomentumExchange, BodyMovingWithUniformFlowFeelsNoForce) {
   // force vanishes exactly for any orientation. The torque vanishes exactly when the body's
   // voxel set has the lattice's cubic symmetry (axis-aligned cube); for a generic
   // orientation a residual of order rho u^2 (surface discretization) remains, printed here
-  // (it is the same for a body at rest in that flow, see docs/hlbm.md).
+  // (it is the same for a body at rest in that flow, see the README).
   const Shape s = test::cube(7, 0.5);
   const Subdomain sub = test::whole(24);
   const Eigen::Vector3d u(0.05, -0.03, 0.02);
