@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "coupler_lib/comm/packets.hpp"
+#include "coupler_lib/coupling/packets.hpp"
 #include "dem_app/lammps_engine.hpp"
 
 namespace lbdem {

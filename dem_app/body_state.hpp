@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "coupler_lib/comm/packets.hpp"
+#include "coupler_lib/coupling/packets.hpp"
 
 namespace lbdem {
 

@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "coupler_lib/geometry/shape.hpp"
 #include "coupler_lib/scene/bodies_section.hpp"
 #include "coupler_lib/scene/dem_section.hpp"
 #include "coupler_lib/scene/scene.hpp"
-#include "coupler_lib/shapes/shape.hpp"
 
 namespace lbdem {
 

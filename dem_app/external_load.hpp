@@ -14,7 +14,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "coupler_lib/shapes/shape.hpp"
+#include "coupler_lib/geometry/shape.hpp"
 
 namespace lbdem {
 

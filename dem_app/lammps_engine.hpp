@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "coupler_lib/comm/packets.hpp"
+#include "coupler_lib/coupling/packets.hpp"
 #include "dem_app/body_state.hpp"
 #include "dem_app/contact_model.hpp"
 #include "dem_app/dem_setup.hpp"

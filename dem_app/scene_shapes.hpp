@@ -2,8 +2,8 @@
 // The DEM's view of the scene's shape catalogue: clump, mass properties, bounding radius.
 #include <vector>
 
+#include "coupler_lib/geometry/shape.hpp"
 #include "coupler_lib/scene/scene.hpp"
-#include "coupler_lib/shapes/shape.hpp"
 
 namespace lbdem {
 

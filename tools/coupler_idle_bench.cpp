@@ -23,9 +23,9 @@
 #include <string>
 #include <vector>
 
-#include "coupler_lib/comm/exchange.hpp"
-#include "coupler_lib/comm/packets.hpp"
-#include "coupler_lib/comm/wait.hpp"
+#include "coupler_lib/coupling/exchange.hpp"
+#include "coupler_lib/coupling/packets.hpp"
+#include "coupler_lib/coupling/wait.hpp"
 
 namespace {
 

@@ -20,7 +20,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "coupler_lib/shapes/build_shape.hpp"
+#include "coupler_lib/geometry/build_shape.hpp"
 #include "dem_app/lammps_engine.hpp"
 
 namespace {

@@ -13,8 +13,8 @@
 #include <array>
 #include <vector>
 
+#include "coupler_lib/geometry/shape.hpp"
 #include "coupler_lib/scene/scene.hpp"
-#include "coupler_lib/shapes/shape.hpp"
 
 namespace lbdem {
 

@@ -4,8 +4,8 @@
 #include <filesystem>
 #include <set>
 
-#include "coupler_lib/shapes/shape_error.hpp"
-#include "coupler_lib/shapes/stl_io.hpp"
+#include "coupler_lib/geometry/shape_error.hpp"
+#include "coupler_lib/geometry/stl_io.hpp"
 
 namespace lbdem {
 

@@ -8,7 +8,7 @@
 #include <span>
 #include <string>
 
-#include "coupler_lib/comm/packets.hpp"
+#include "coupler_lib/coupling/packets.hpp"
 
 namespace lbdem {
 

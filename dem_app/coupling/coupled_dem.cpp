@@ -5,9 +5,9 @@
 #include <memory>
 
 #include "coupler_lib/app/progress.hpp"
-#include "coupler_lib/comm/dem_coupler.hpp"
-#include "coupler_lib/comm/schedule.hpp"
-#include "coupler_lib/comm/world.hpp"
+#include "coupler_lib/coupling/dem_coupler.hpp"
+#include "coupler_lib/coupling/schedule.hpp"
+#include "coupler_lib/coupling/world.hpp"
 #include "coupler_lib/scene/settling_balance.hpp"
 #include "dem_app/body_output.hpp"
 #include "dem_app/coupling/body_trace.hpp"

@@ -5,9 +5,9 @@
 #include <cstdio>
 #include <vector>
 
-#include "coupler_lib/comm/fluid_coupler.hpp"
-#include "coupler_lib/comm/world.hpp"
-#include "coupler_lib/shapes/build_shape.hpp"
+#include "coupler_lib/coupling/fluid_coupler.hpp"
+#include "coupler_lib/coupling/world.hpp"
+#include "coupler_lib/geometry/build_shape.hpp"
 #include "fluid_app/coupling/settling_force.hpp"
 #include "fluid_app/fluid_run.hpp"
 #include "fluid_app/hlbm/body_field.hpp"

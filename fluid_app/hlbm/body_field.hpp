@@ -19,9 +19,9 @@
 #include <unordered_map>
 #include <vector>
 
-#include "coupler_lib/comm/packets.hpp"
+#include "coupler_lib/coupling/packets.hpp"
+#include "coupler_lib/geometry/shape.hpp"
 #include "coupler_lib/scene/units.hpp"
-#include "coupler_lib/shapes/shape.hpp"
 #include "fluid_app/hlbm/momentum_exchange.hpp"
 #include "fluid_app/hlbm/reference_porosity.hpp"
 #include "fluid_app/hlbm/subdomain.hpp"

@@ -19,7 +19,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "coupler_lib/shapes/shape.hpp"
+#include "coupler_lib/geometry/shape.hpp"
 
 namespace lbdem::hlbm {
 

@@ -3,7 +3,7 @@
 #include <array>
 #include <type_traits>
 
-#include "fluid_app/output/hdf5_handle.hpp"
+#include "coupler_lib/output/hdf5_handle.hpp"
 
 namespace lbdem {
 

@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "fluid_app/stability_watch.hpp"
-#include "output_test_support.hpp"
+#include "output/output_test_support.hpp"
 
 namespace lbdem {
 namespace {

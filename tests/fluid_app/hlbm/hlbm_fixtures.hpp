@@ -8,8 +8,8 @@
 #include <functional>
 #include <vector>
 
-#include "coupler_lib/comm/packets.hpp"
-#include "coupler_lib/shapes/shape.hpp"
+#include "coupler_lib/coupling/packets.hpp"
+#include "coupler_lib/geometry/shape.hpp"
 #include "fluid_app/hlbm/body_field.hpp"
 #include "fluid_app/lattice/d3q19.hpp"
 

@@ -1,0 +1,85 @@
+#include "coupler_lib/coupling/dem_coupler.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <unordered_set>
+
+#include "coupler_lib/coupling/live_transport.hpp"
+#include "coupler_lib/coupling/reduce.hpp"
+#include "coupler_lib/coupling/replay_transport.hpp"
+
+namespace lbdem {
+
+DemCoupler::DemCoupler(const World& world, const Scene& scene)
+    : DemCoupler(world.side(), std::make_unique<LiveDemTransport>(world)) {
+  if (!scene.coupling.record.empty()) {
+    RecordingInfo info;
+    info.scene_hash = scene.hash;
+    info.scene_file = scene.file;
+    info.fluid_ranks = world.peer().size;
+    info.dem_ranks = world.size();
+    info.layout = layout_;
+    recorder_ = std::make_unique<Recorder>(side_, scene.coupling.record, info);
+  }
+}
+
+DemCoupler::DemCoupler(const AppContext& ctx, const std::string& recording)
+    : DemCoupler(ctx.side_comm, std::make_unique<ReplayDemTransport>(ctx, recording)) {}
+
+DemCoupler::DemCoupler(MPI_Comm side, std::unique_ptr<DemTransport> transport)
+    : transport_(std::move(transport)), side_(side) {
+  layout_ = transport_->receive_layout();
+  try {
+    validate_layout(layout_);
+  } catch (const std::invalid_argument& e) {
+    throw SideError(std::string("fluid decomposition received by the DEM side: ") + e.what());
+  }
+}
+
+DemCoupler::~DemCoupler() = default;
+
+void DemCoupler::send_states(std::int64_t step, std::span<const BodyState> owned) {
+  const ScopedCouplingTimer timer(times_);
+  sent_.assign(owned.begin(), owned.end());
+  std::unordered_set<std::int64_t> ids;
+  std::vector<std::vector<BodyState>> buckets(layout_.boxes.size());
+  for (BodyState& s : sent_) {
+    s.version = kProtocolVersion;
+    s.step = step;
+    if (!ids.insert(s.id).second)
+      throw std::runtime_error("send_states at step " + std::to_string(step) + ": body " +
+                               std::to_string(s.id) + " appears twice in the owned list");
+    if (s.shape < 0 || s.shape >= static_cast<int>(layout_.shape_radius.size()))
+      throw std::runtime_error("body " + std::to_string(s.id) + " has shape index " +
+                               std::to_string(s.shape) + ", but the fluid side knows " +
+                               std::to_string(layout_.shape_radius.size()) + " shapes");
+    // Routed by the announced (or recorded) layout; a replay checks `sent_` itself.
+    for (int r : touched_ranks(layout_, s.x, layout_.reach(s.shape)))
+      buckets[static_cast<size_t>(r)].push_back(s);
+  }
+  transport_->send_states(step, sent_, buckets);
+  if (recorder_) recorder_->states(step, sent_);
+  step_ = step;
+  answered_ = false;
+}
+
+std::vector<BodyLoad> DemCoupler::receive_loads(std::int64_t step) {
+  const ScopedCouplingTimer timer(times_);
+  if (answered_)
+    throw std::runtime_error("receive_loads(" + std::to_string(step) +
+                             ") without a send_states before it: each send_states is answered "
+                             "by exactly one receive_loads (last sent: step " +
+                             std::to_string(step_) + ")");
+  answered_ = true;
+  std::vector<BodyLoad> loads = reduce_loads(sent_, transport_->receive_loads(step), step);
+  if (recorder_) recorder_->loads(step, loads);
+  return loads;
+}
+
+CouplingTimes DemCoupler::times() const {
+  CouplingTimes t = times_;
+  t.idle_s = transport_->waited();
+  return t;
+}
+
+}  // namespace lbdem

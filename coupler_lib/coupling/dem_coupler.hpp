@@ -1,0 +1,63 @@
+#pragma once
+// The DEM program's end of the coupling.
+//
+//   DemCoupler coupler(world, ctx.scene);             // live (after connect()); records
+//                                                     // when coupling.record is set
+//   DemCoupler coupler(ctx, ctx.cli.replay);          // alone, fed by a recording
+//   for each coupling step:
+//     coupler.send_states(step, owned);               // every body this rank owns now
+//     auto loads = coupler.receive_loads(step);       // loads[i] is on owned[i]
+//     ... n_DEM substeps with the loads held constant ...
+//
+// Ownership may change between steps (LAMMPS migrates bodies): each call takes whatever
+// this rank owns at that moment, and the load on a body comes back to the rank that sent
+// its state. The partials of several fluid ranks are summed in fluid-rank order, so the
+// result does not depend on message arrival (reduce.hpp).
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "coupler_lib/app/run_app.hpp"
+#include "coupler_lib/coupling/coupling_times.hpp"
+#include "coupler_lib/coupling/packets.hpp"
+#include "coupler_lib/coupling/recorder.hpp"
+#include "coupler_lib/coupling/routing.hpp"
+#include "coupler_lib/coupling/transport.hpp"
+#include "coupler_lib/coupling/world.hpp"
+
+namespace lbdem {
+
+class DemCoupler {
+ public:
+  // Live. Collective over both programs (the fluid side constructs its FluidCoupler).
+  DemCoupler(const World& world, const Scene& scene);
+  // Replay from a recording. Collective over the DEM ranks.
+  DemCoupler(const AppContext& ctx, const std::string& recording);
+  ~DemCoupler();
+
+  // Collective over both programs (live) or over the DEM ranks (replay).
+  void send_states(std::int64_t step, std::span<const BodyState> owned);
+  // One load per body of the last send_states, in the same order. `step` is the label the
+  // fluid side gave its loads (checked on every packet).
+  std::vector<BodyLoad> receive_loads(std::int64_t step);
+
+  // The decomposition the fluid side announced (or the recorded one in a replay).
+  const FluidLayout& fluid_layout() const { return layout_; }
+  // Time spent in this coupler so far, and how much of it was waiting for the fluid.
+  CouplingTimes times() const;
+
+ private:
+  DemCoupler(MPI_Comm side, std::unique_ptr<DemTransport> transport);
+
+  std::unique_ptr<DemTransport> transport_;
+  CouplingTimes times_;
+  std::unique_ptr<Recorder> recorder_;
+  MPI_Comm side_;
+  FluidLayout layout_;
+  std::int64_t step_ = -1;       // step of the last send_states
+  bool answered_ = true;         // receive_loads answered it
+  std::vector<BodyState> sent_;  // what was sent at step_
+};
+
+}  // namespace lbdem

@@ -1,0 +1,69 @@
+#include "coupler_lib/coupling/live_transport.hpp"
+
+#include "coupler_lib/coupling/exchange.hpp"
+
+namespace lbdem {
+
+LiveFluidTransport::LiveFluidTransport(const World& world)
+    : world_(&world),
+      inter_(world.inter()),
+      rank_(world.rank()),
+      dem_ranks_(world.peer().size),
+      wait_(world.wait()) {}
+
+ExchangeWait LiveFluidTransport::how() {
+  return {wait_, [this] { world_->check_peer(); }, &waited_};
+}
+
+void LiveFluidTransport::announce(const FluidLayout& layout) {
+  // Fluid rank 0 broadcasts to every DEM rank (intercommunicator broadcast: the sending
+  // group names MPI_ROOT on its root and MPI_PROC_NULL elsewhere).
+  std::vector<double> flat = pack_layout(layout);
+  unsigned long long n = flat.size();
+  const int root = rank_ == 0 ? MPI_ROOT : MPI_PROC_NULL;
+  MPI_Request req;
+  MPI_Ibcast(&n, 1, MPI_UNSIGNED_LONG_LONG, root, inter_, &req);
+  wait_request(req, wait_, [this] { world_->check_peer(); });
+  MPI_Ibcast(flat.data(), static_cast<int>(n), MPI_DOUBLE, root, inter_, &req);
+  wait_request(req, wait_, [this] { world_->check_peer(); });
+}
+
+std::vector<std::vector<BodyState>> LiveFluidTransport::receive_states(std::int64_t) {
+  return exchange(inter_, std::vector<std::vector<BodyState>>(static_cast<size_t>(dem_ranks_)),
+                  how());
+}
+
+void LiveFluidTransport::send_loads(std::int64_t,
+                                    const std::vector<std::vector<BodyLoad>>& per_dem_rank) {
+  exchange(inter_, per_dem_rank, how());
+}
+
+LiveDemTransport::LiveDemTransport(const World& world)
+    : world_(&world), inter_(world.inter()), fluid_ranks_(world.peer().size), wait_(world.wait()) {}
+
+ExchangeWait LiveDemTransport::how() {
+  return {wait_, [this] { world_->check_peer(); }, &waited_};
+}
+
+FluidLayout LiveDemTransport::receive_layout() {
+  unsigned long long n = 0;
+  MPI_Request req;
+  MPI_Ibcast(&n, 1, MPI_UNSIGNED_LONG_LONG, 0, inter_, &req);
+  wait_request(req, wait_, [this] { world_->check_peer(); });
+  std::vector<double> flat(n);
+  MPI_Ibcast(flat.data(), static_cast<int>(n), MPI_DOUBLE, 0, inter_, &req);
+  wait_request(req, wait_, [this] { world_->check_peer(); });
+  return unpack_layout(flat);
+}
+
+void LiveDemTransport::send_states(std::int64_t, std::span<const BodyState>,
+                                   const std::vector<std::vector<BodyState>>& per_fluid_rank) {
+  exchange(inter_, per_fluid_rank, how());
+}
+
+std::vector<std::vector<BodyLoad>> LiveDemTransport::receive_loads(std::int64_t) {
+  return exchange(inter_, std::vector<std::vector<BodyLoad>>(static_cast<size_t>(fluid_ranks_)),
+                  how());
+}
+
+}  // namespace lbdem

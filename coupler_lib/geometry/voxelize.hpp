@@ -1,0 +1,22 @@
+#pragma once
+// Inside/outside voxelization on a cell-centred lattice (input frame).
+//
+// The lattice is centred on the middle of the geometry's bounding box, with
+// ceil(extent / h) voxels across each axis plus `pad` empty layers on every side, so a box
+// whose edges are multiples of h is voxelized exactly. Meshes use ray parity along z per
+// column of voxel centres; ties at edges and vertices are broken by a fixed infinitesimal
+// shift of the ray (x + eps, y + eps^2) evaluated with each edge in one canonical direction,
+// so a ray through a shared edge or vertex is counted exactly once.
+#include "coupler_lib/geometry/shape.hpp"
+#include "coupler_lib/geometry/solid_geometry.hpp"
+#include "coupler_lib/geometry/triangle_mesh.hpp"
+
+namespace lbdem {
+
+Voxels voxelize(const SolidGeometry& geometry, double h, int pad = 2);
+Voxels voxelize_mesh(const TriangleMesh& mesh, double h, int pad = 2);
+
+// The same lattice, translated by -shift (e.g. into the shape frame: shift = centroid).
+Voxels translated(Voxels v, const Eigen::Vector3d& shift);
+
+}  // namespace lbdem

@@ -1,0 +1,70 @@
+#include <gtest/gtest.h>
+
+#include "coupler_lib/coupling/schedule.hpp"
+
+namespace lbdem {
+namespace {
+
+Scene coupled(const std::string& coupling = "") {
+  const std::string text = R"(
+time: {end: 1.0}
+fluid: {domain: [1, 1, 1], dx: 0.1, viscosity: 0.01, tau: 0.8}
+dem: {dt: 0.003}
+shapes: [{name: b, kind: sphere, diameter: 0.2}]
+bodies: [{shape: b, position: [0.5, 0.5, 0.5], density: 2000}]
+)" + coupling;
+  return parse_scene(Section::load_string(text, "s.yaml"), 0);
+}
+
+TEST(Schedule, SubstepsRoundUpSoTheDemStepNeverGrows) {
+  EXPECT_EQ(dem_substeps(0.01, 0.003), 4);  // 3.33 -> 4, dt_DEM = 0.0025 <= 0.003
+  EXPECT_EQ(dem_substeps(0.01, 0.0025), 4);
+  EXPECT_EQ(dem_substeps(0.01, 0.01 / 3), 3);  // ratio 3.0000000000000004 is still 3
+  EXPECT_EQ(dem_substeps(1.0, 0.1), 10);       // 1.0 / 0.1 = 10 in floating point
+}
+
+TEST(Schedule, DemStepLargerThanFluidStepUsesTheFluidStep) {
+  EXPECT_EQ(dem_substeps(0.01, 0.02), 1);
+  const Schedule s = make_schedule(coupled(), 0.01, 0.02);
+  EXPECT_EQ(s.dem_substeps, 1);
+  EXPECT_DOUBLE_EQ(s.dt_dem, 0.01);
+}
+
+TEST(Schedule, StepsCadenceAndExchange) {
+  const Schedule s = make_schedule(
+      coupled("coupling: {exchange_interval: 2, output_interval: 0.1, checkpoint_interval: "
+              "0.25}\n"),
+      0.01, 0.003);
+  EXPECT_EQ(s.steps, 100);
+  EXPECT_EQ(s.dem_substeps, 4);
+  EXPECT_DOUBLE_EQ(s.dt_dem, 0.0025);
+  EXPECT_EQ(s.exchange_interval, 2);
+  EXPECT_EQ(s.output_interval, 10);
+  EXPECT_EQ(s.checkpoint_interval, 26);  // 12.5 exchanges round to 13, on exchange steps
+  EXPECT_TRUE(s.exchange_at(4));
+  EXPECT_FALSE(s.exchange_at(5));
+  EXPECT_TRUE(s.output_at(20));
+  EXPECT_FALSE(s.checkpoint_at(25));
+}
+
+TEST(Schedule, NoCadenceByDefaultAndEndRoundsUp) {
+  const Schedule s = make_schedule(coupled(), 0.3, 0.003);
+  EXPECT_EQ(s.steps, 4);  // 3.33 fluid steps to reach 1 s
+  EXPECT_EQ(s.output_interval, 0);
+  EXPECT_FALSE(s.output_at(0));
+  EXPECT_FALSE(s.checkpoint_at(4));
+}
+
+TEST(Schedule, RejectsMissingSteps) {
+  EXPECT_THROW(make_schedule(coupled(), 0.0, 0.003), SceneError);
+  EXPECT_THROW(make_schedule(coupled(), 0.01, -1.0), SceneError);
+}
+
+TEST(Schedule, CouplingKeysAreCheckedByTheReader) {
+  EXPECT_THROW(coupled("coupling: {exchange_interval: 0}\n"), SceneError);
+  EXPECT_THROW(coupled("coupling: {wait: spin}\n"), SceneError);
+  EXPECT_EQ(coupled("coupling: {wait: blocking}\n").coupling.wait, "blocking");
+}
+
+}  // namespace
+}  // namespace lbdem
