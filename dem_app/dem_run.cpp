@@ -7,9 +7,9 @@
 #include <sstream>
 
 #include "coupler_lib/app/progress.hpp"
+#include "coupler_lib/scene/shape_catalogue.hpp"
 #include "dem_app/body_output.hpp"
 #include "dem_app/contact_model.hpp"
-#include "dem_app/scene_shapes.hpp"
 
 namespace lbdem {
 

@@ -9,12 +9,12 @@
 #include <string>
 #include <vector>
 
+#include "coupler_lib/errors.hpp"
 #include "coupler_lib/geometry/build_shape.hpp"
 #include "coupler_lib/geometry/clump_generator.hpp"
 #include "coupler_lib/geometry/clump_io.hpp"
 #include "coupler_lib/geometry/mass_properties.hpp"
 #include "coupler_lib/geometry/mesh_primitives.hpp"
-#include "coupler_lib/geometry/shape_error.hpp"
 #include "coupler_lib/geometry/stl_io.hpp"
 #include "coupler_lib/geometry/voxelize.hpp"
 

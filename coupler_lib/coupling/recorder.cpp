@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "coupler_lib/coupling/side_gather.hpp"
+#include "coupler_lib/output/gather.hpp"
 
 namespace lbdem {
 

@@ -7,7 +7,7 @@
 
 #include "coupler_lib/coupling/compare.hpp"
 #include "coupler_lib/coupling/reduce.hpp"
-#include "coupler_lib/coupling/side_gather.hpp"
+#include "coupler_lib/output/gather.hpp"
 
 namespace lbdem {
 

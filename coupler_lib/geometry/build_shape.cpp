@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <sstream>
 
+#include "coupler_lib/errors.hpp"
 #include "coupler_lib/geometry/clump_generator.hpp"
 #include "coupler_lib/geometry/clump_io.hpp"
 #include "coupler_lib/geometry/mass_properties.hpp"
 #include "coupler_lib/geometry/mesh_check.hpp"
-#include "coupler_lib/geometry/shape_error.hpp"
 #include "coupler_lib/geometry/stl_io.hpp"
 #include "coupler_lib/geometry/voxelize.hpp"
 

@@ -5,9 +5,9 @@
 #include <numeric>
 #include <sstream>
 
+#include "coupler_lib/errors.hpp"
 #include "coupler_lib/geometry/distance_transform.hpp"
 #include "coupler_lib/geometry/mass_properties.hpp"
-#include "coupler_lib/geometry/shape_error.hpp"
 
 namespace lbdem {
 

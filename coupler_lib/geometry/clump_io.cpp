@@ -4,7 +4,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "coupler_lib/geometry/shape_error.hpp"
+#include "coupler_lib/errors.hpp"
 
 namespace lbdem {
 

@@ -7,7 +7,7 @@
 #include <map>
 #include <sstream>
 
-#include "coupler_lib/geometry/shape_error.hpp"
+#include "coupler_lib/errors.hpp"
 
 namespace lbdem {
 

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "coupler_lib/errors.hpp"
 #include "coupler_lib/geometry/ray_parity.hpp"
-#include "coupler_lib/geometry/shape_error.hpp"
 
 namespace lbdem {
 

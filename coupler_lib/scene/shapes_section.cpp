@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <set>
 
-#include "coupler_lib/geometry/shape_error.hpp"
+#include "coupler_lib/errors.hpp"
 #include "coupler_lib/geometry/stl_io.hpp"
 
 namespace lbdem {

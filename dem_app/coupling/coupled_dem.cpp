@@ -9,12 +9,12 @@
 #include "coupler_lib/coupling/schedule.hpp"
 #include "coupler_lib/coupling/world.hpp"
 #include "coupler_lib/scene/settling_balance.hpp"
+#include "coupler_lib/scene/shape_catalogue.hpp"
 #include "dem_app/body_output.hpp"
 #include "dem_app/coupling/body_trace.hpp"
 #include "dem_app/dem_run.hpp"
 #include "dem_app/dem_setup.hpp"
 #include "dem_app/lammps_engine.hpp"
-#include "dem_app/scene_shapes.hpp"
 
 namespace lbdem {
 

@@ -4,10 +4,10 @@
 #include <string>
 
 #include "coupler_lib/scene/scene.hpp"
+#include "coupler_lib/scene/shape_catalogue.hpp"
 #include "dem_app/contact_model.hpp"
 #include "dem_app/dem_setup.hpp"
 #include "dem_app/external_load.hpp"
-#include "dem_app/scene_shapes.hpp"
 
 namespace lbdem {
 namespace {

@@ -6,9 +6,9 @@
 #include <cstdio>
 #include <string>
 
+#include "coupler_lib/errors.hpp"
 #include "coupler_lib/geometry/build_shape.hpp"
 #include "coupler_lib/geometry/mass_properties.hpp"
-#include "coupler_lib/geometry/shape_error.hpp"
 #include "coupler_lib/scene/shapes_section.hpp"
 
 namespace lbdem {

@@ -5,11 +5,11 @@
 #include <cstdio>
 #include <fstream>
 
+#include "coupler_lib/errors.hpp"
 #include "coupler_lib/geometry/clump_generator.hpp"
 #include "coupler_lib/geometry/clump_io.hpp"
 #include "coupler_lib/geometry/mesh_check.hpp"
 #include "coupler_lib/geometry/mesh_primitives.hpp"
-#include "coupler_lib/geometry/shape_error.hpp"
 #include "coupler_lib/geometry/voxelize.hpp"
 #include "temp_file.hpp"
 

@@ -3,9 +3,9 @@
 
 #include <fstream>
 
+#include "coupler_lib/errors.hpp"
 #include "coupler_lib/geometry/mesh_check.hpp"
 #include "coupler_lib/geometry/mesh_primitives.hpp"
-#include "coupler_lib/geometry/shape_error.hpp"
 #include "coupler_lib/geometry/stl_io.hpp"
 #include "temp_file.hpp"
 

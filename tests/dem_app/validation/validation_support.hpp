@@ -10,10 +10,10 @@
 #include <vector>
 
 #include "coupler_lib/scene/scene.hpp"
+#include "coupler_lib/scene/shape_catalogue.hpp"
 #include "dem_app/body_output.hpp"
 #include "dem_app/dem_setup.hpp"
 #include "dem_app/lammps_engine.hpp"
-#include "dem_app/scene_shapes.hpp"
 
 namespace lbdem::test {
 

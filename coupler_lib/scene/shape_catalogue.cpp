@@ -1,7 +1,7 @@
-#include "dem_app/scene_shapes.hpp"
+#include "coupler_lib/scene/shape_catalogue.hpp"
 
+#include "coupler_lib/errors.hpp"
 #include "coupler_lib/geometry/build_shape.hpp"
-#include "coupler_lib/geometry/shape_error.hpp"
 
 namespace lbdem {
 
