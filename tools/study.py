@@ -1,0 +1,64 @@
+#!/usr/bin/env python3
+"""Runs the hindered-settling study of a study file (configs/study/*.yaml; docs/study.md):
+packing, single-body runs (u_T), one run per shape and solid fraction, analysis, summary.csv and
+the plots settling.png, rdf.png, correlation.png, vacf.png. Resumable: run it again after an
+interruption and finished runs are skipped.
+
+    /usr/bin/python3 tools/study.py configs/study/small.yaml [--build build] [--out DIR]
+        [--shapes cube] [--phi 0.1 0.3] [--no-render] [--plan]
+"""
+import argparse
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from lbdem import study  # noqa: E402
+
+
+def plan(s, shapes, phis, rate):
+    """Cells, steps and cost of every run, at a measured rate of cell updates per second."""
+    n = int(s.c["bodies"])
+    vol = n * math.pi / 6 * s.d**3
+    total = 0.0
+    print(f"{'run':<22}{'cells':>16}{'steps':>9}{'cell updates':>15}{'hours':>9}")
+    rows = [(f"single_{sh}", [round(k * s.d / s.dx) for k in s.c["single"]["box"]],
+             float(s.c["single"]["end"])) for sh in shapes]
+    rows += [(f"{sh}_phi{phi:.3f}", [math.ceil((vol / phi) ** (1 / 3) / s.dx - 1e-9)] * 3,
+              float(s.c["run"]["end"])) for sh in shapes for phi in phis]
+    for name, cells, end in rows:
+        steps = round(end / s.dt)
+        work = cells[0] * cells[1] * cells[2] * steps
+        total += work
+        print(f"{name:<22}{'x'.join(map(str, cells)):>16}{steps:>9}{work:>15.3g}"
+              f"{work / rate / 3600:>9.2f}")
+    print(f"total {total:.3g} cell updates = {total / rate / 3600:.2f} h at {rate / 1e6:.2f} M "
+          f"cell updates/s (dx = {s.dx:.4g} m, dt = {s.dt:.4g} s, {n} bodies)")
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
+    p.add_argument("study")
+    p.add_argument("--build", default=os.path.join(os.path.dirname(__file__), "..", "build"))
+    p.add_argument("--out", help="output folder (default: the study file's 'output')")
+    p.add_argument("--shapes", nargs="+", choices=["sphere", "cube"])
+    p.add_argument("--phi", nargs="+", type=float, help="solid fractions (default: the file's)")
+    p.add_argument("--no-render", action="store_true", help="no body surfaces and pictures")
+    p.add_argument("--plan", action="store_true",
+                   help="print cells, steps and cost of every run at --rate; run nothing")
+    p.add_argument("--rate", type=float, default=2.0e6,
+                   help="cell updates per second for --plan (measured: docs/study.md)")
+    args = p.parse_args()
+    s = study.Study(study.load_study(args.study), args.build, args.out)
+    shapes = args.shapes or s.c["shapes"]
+    phis = args.phi or [float(v) for v in s.c["solid_fractions"]]
+    if args.plan:
+        plan(s, shapes, phis, args.rate)
+        return 0
+    render = not args.no_render and s.c.get("render", True)
+    s.execute(shapes, phis, render)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
