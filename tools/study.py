@@ -24,7 +24,8 @@ def plan(s, shapes, phis, rate):
     print(f"{'run':<22}{'cells':>16}{'steps':>9}{'cell updates':>15}{'hours':>9}")
     rows = [(f"single_{sh}", [round(k * s.d / s.dx) for k in s.c["single"]["box"]],
              float(s.c["single"]["end"])) for sh in shapes]
-    rows += [(f"{sh}_phi{phi:.3f}", [math.ceil((vol / phi) ** (1 / 3) / s.dx - 1e-9)] * 3,
+    rows += [(f"{sh}_phi{phi:.3f}", [max(round((vol / phi) ** (1 / 3) / s.dx),
+                                          math.ceil((vol / 0.4) ** (1 / 3) / s.dx - 1e-9))] * 3,
               float(s.c["run"]["end"])) for sh in shapes for phi in phis]
     for name, cells, end in rows:
         steps = round(end / s.dt)

@@ -149,51 +149,73 @@ import sys
 from paraview.simple import *
 bodies_file, fluid_file, png = sys.argv[1], sys.argv[2], sys.argv[3]
 view = CreateView("RenderView")
+SetActiveView(view)
 view.ViewSize = [1200, 900]
-view.Background = [1, 1, 1]
+view.OrientationAxesVisibility = 1
 try:
     view.UseColorPaletteForBackground = 0
 except AttributeError:
     pass
+view.Background = [1, 1, 1]
 bodies = XDMFReader(FileNames=[bodies_file])
-times = bodies.TimestepValues
-t = times[-1] if hasattr(times, "__len__") and len(times) else 0.0
+readers = [bodies]
+if fluid_file != "-":
+    fluid = XDMFReader(FileNames=[fluid_file])
+    readers.append(fluid)
+# The last output time of either (the fluid's last field may come a step after the bodies' last
+# snapshot; each reader then shows its latest data at or before it).
+t = max([r.TimestepValues[-1] for r in readers
+         if hasattr(r.TimestepValues, "__len__") and len(r.TimestepValues)] or [0.0])
+scene = GetAnimationScene()
+scene.UpdateAnimationUsingDataTimeSteps()
+scene.AnimationTime = t
 view.ViewTime = t
 d = Show(bodies, view)
 ColorBy(d, ("POINTS", "vz"))
 d.RescaleTransferFunctionToDataRange(True, False)
 d.SetScalarBarVisibility(view, True)
+bar = GetScalarBar(GetColorTransferFunction("vz"), view)
+bar.Title, bar.ComponentTitle = "body v_z (m/s)", ""
+bar.TitleColor, bar.LabelColor = [0, 0, 0], [0, 0, 0]
 if fluid_file != "-":
-    fluid = XDMFReader(FileNames=[fluid_file])
+    fluid.UpdatePipeline(t)
+    b = fluid.GetDataInformation().GetBounds()
     s = Slice(Input=fluid)
     s.SliceType = "Plane"
-    info = fluid.GetDataInformation().GetBounds()
-    s.SliceType.Origin = [0.5 * (info[0] + info[1]), 0.5 * (info[2] + info[3]),
-                          0.5 * (info[4] + info[5])]
+    s.SliceType.Origin = [0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5])]
     s.SliceType.Normal = [0, 1, 0]
     sd = Show(s, view)
-    names = [a.GetName() for a in fluid.PointData] + [a.GetName() for a in fluid.CellData]
-    vel = [n for n in names if "velocity" in n.lower()]
-    if vel:
-        ColorBy(sd, ("POINTS" if vel[0] in [a.GetName() for a in fluid.PointData] else "CELLS",
-                     vel[0], "Magnitude"))
-        sd.SetScalarBarVisibility(view, True)
-    sd.Opacity = 0.6
-view.CameraPosition = [1, -2.5, 1.2]
-view.CameraViewUp = [0, 0, 1]
+    ColorBy(sd, ("POINTS", "velocity", "Magnitude"))
+    sd.RescaleTransferFunctionToDataRange(False, False)
+    sd.SetScalarBarVisibility(view, True)
+    fbar = GetScalarBar(GetColorTransferFunction("velocity"), view)
+    fbar.Title, fbar.ComponentTitle = "fluid |u| (m/s)", ""
+    fbar.TitleColor, fbar.LabelColor = [0, 0, 0], [0, 0, 0]
+    fbar.WindowLocation = "Upper Right Corner"
+    GetColorTransferFunction("velocity").ApplyPreset("Viridis (matplotlib)", True)
+d.RescaleTransferFunctionToDataRange(False, False)
+Render(view)  # the first render places the camera; turn it afterwards (z up, seen from -y)
+cam = GetActiveCamera()
+cam.SetFocalPoint(0, 0, 0)
+cam.SetPosition(0, -1, 0)
+cam.SetViewUp(0, 0, 1)
+cam.Azimuth(25)
+cam.Elevation(20)
 view.ResetCamera()
+Render(view)
 SaveScreenshot(png, view, ImageResolution=[1200, 900])
 '''
 
 
 def render_png(scene_path, bodies_xdmf, log=print):
     """PNG of the last output time: bodies coloured by v_z and a y-normal slice of the fluid
-    velocity, by pvbatch under xvfb-run. Returns the PNG path, or None (with a message) when
-    pvbatch is missing."""
-    pvbatch = shutil.which("pvbatch")
-    if not pvbatch:
-        log("render: pvbatch not found (Debian: apt-get install paraview python3-paraview xvfb); "
-            "no picture")
+    velocity, by `xvfb-run -a -s "-screen 0 1280x1024x24" pvbatch --force-offscreen-rendering`
+    (Debian's ParaView 5.11 needs an X display with 24-bit colour even off screen). Returns the PNG path, or None (with a message) when pvbatch or
+    xvfb-run is missing."""
+    pvbatch, xvfb = shutil.which("pvbatch"), shutil.which("xvfb-run")
+    if not pvbatch or not xvfb:
+        log("render: pvbatch or xvfb-run not found (Debian: apt-get install paraview "
+            "python3-paraview xvfb xauth); no picture")
         return None
     scene = io.load_scene(scene_path)
     out = scene.get("fluid", {}).get("output", {}).get("directory", ".")
@@ -202,10 +224,12 @@ def render_png(scene_path, bodies_xdmf, log=print):
     script = os.path.join(os.path.dirname(bodies_xdmf), "render.py")
     with open(script, "w") as f:
         f.write(RENDER)
-    cmd = [pvbatch, script, bodies_xdmf, fluid if os.path.exists(fluid) else "-", png]
-    if shutil.which("xvfb-run"):
-        cmd = ["xvfb-run", "-a"] + cmd
-    proc = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
+    cmd = [xvfb, "-a", "-s", "-screen 0 1280x1024x24", pvbatch, "--force-offscreen-rendering", script, bodies_xdmf,
+           fluid if os.path.exists(fluid) else "-", png]
+    for _ in range(3):  # xvfb-run -a now and then hands out a display that is not ready yet
+        proc = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
+        if proc.returncode == 0 and os.path.exists(png):
+            break
     if proc.returncode != 0 or not os.path.exists(png):
         raise RuntimeError(f"{' '.join(cmd)} failed ({proc.returncode}):\n"
                            f"{(proc.stdout + proc.stderr)[-3000:]}")

@@ -47,7 +47,20 @@ class Study:
         self.dx = self.d / float(f["cells_per_diameter"])
         self.dt = (self.tau - 0.5) / 3.0 * self.dx**2 / self.nu  # diffusive scaling: nu_lb = (tau - 1/2)/3
         self.clump = os.path.normpath(os.path.join(base, config["cube_clump"]))
-        self.rate = None  # measured cell updates per wall second
+        self.finished = []  # (steps, cells, wall s) of the runs of this call
+
+    def estimate(self, steps, cells):
+        """Wall seconds of a run, from the runs finished in this call: wall = steps (c0 + c1 cells)
+        fitted by least squares (a per-step cost of the bodies and the coupling plus a cost per
+        cell update); 2e6 cell updates per second before any run has finished."""
+        if not self.finished:
+            return steps * cells / 2.0e6
+        a = np.array([[s, s * c] for s, c, _ in self.finished], float)
+        w = np.array([t for _, _, t in self.finished], float)
+        coef = np.linalg.lstsq(a, w, rcond=None)[0] if len(w) > 1 else np.array([-1.0, 0.0])
+        if np.any(coef < 0):  # one run, or a fit without meaning: cost per cell update alone
+            coef = np.array([0.0, w.sum() / a[:, 1].sum()])
+        return steps * (coef[0] + coef[1] * cells)
 
     # ---- scenes -------------------------------------------------------------------------------
     def shape_entry(self, shape):
@@ -90,9 +103,12 @@ class Study:
         return s, cells
 
     def suspension_scene(self, shape, phi, base_packing):
-        # The box is a whole number of cells at the study's dx: the packing is scaled to the box
-        # of ceil(L / dx) cells (never compressed), so the measured phi is at or below phi.
-        n = math.ceil(base_packing.scaled(phi).box / self.dx - 1e-9)
+        # The box is a whole number of cells at the study's dx: the phi = 0.4 packing is scaled to
+        # the box of round(L / dx) cells (one more if that would compress it beyond 0.4), so the
+        # measured phi is within about 1.5 / (L / dx) x 3 of the nominal one.
+        n = max(1, round(base_packing.scaled(phi).box / self.dx))
+        while n * self.dx < base_packing.box:
+            n += 1
         box = n * self.dx
         p = base_packing.scaled(base_packing.n * math.pi / 6 * self.d**3 / box**3)
         s = self.base_scene(f"{shape}_phi{phi:.3f}", [box] * 3, float(self.c["run"]["end"]))
@@ -150,7 +166,7 @@ class Study:
             f.write(text)
         steps = round(scene["time"]["end"] / self.dt)
         work = float(np.prod(cells)) * steps
-        est = work / (self.rate or 2.0e6)
+        est = self.estimate(steps, float(np.prod(cells)))
         ranks = self.c["run"].get("ranks", [1, 1])
         self.log(f"study: [{index}/{total}] {name}: {cells[0]}x{cells[1]}x{cells[2]} cells, {steps} "
                  f"steps; estimated {est:.0f} s for this run, {est + remaining:.0f} s to the end "
@@ -159,7 +175,7 @@ class Study:
                           log=os.path.join(folder, "run.log"))
         res = {"name": name, "wall_s": wall, "cells": cells, "steps": steps,
                "cell_updates_per_s": work / wall, "ranks": ranks}
-        self.rate = work / wall
+        self.finished.append((steps, float(np.prod(cells)), wall))
         with open(result_file, "w") as f:
             json.dump(res, f, indent=1)
         self.log(f"study: [{index}/{total}] {name}: finished in {wall:.0f} s "
@@ -232,10 +248,10 @@ class Study:
             else:
                 sc, cells, p = self.suspension_scene(shape, phi, base)
                 scenes.append((sc["name"], sc, cells, p))
-        costs = [float(np.prod(c)) * round(s["time"]["end"] / self.dt) for _, s, c, _ in scenes]
         results = {}
         for k, (name, sc, cells, p) in enumerate(scenes):
-            remaining = sum(costs[k + 1:]) / (self.rate or 2.0e6)
+            remaining = sum(self.estimate(round(s["time"]["end"] / self.dt), float(np.prod(c)))
+                            for _, s, c, _ in scenes[k + 1:])
             results[name] = self.launch(name, sc, cells, p, k + 1, len(scenes), remaining)
         rows, curves = [], {}
         for shape in shapes:
