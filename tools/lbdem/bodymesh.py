@@ -210,8 +210,8 @@ SaveScreenshot(png, view, ImageResolution=[1200, 900])
 def render_png(scene_path, bodies_xdmf, log=print):
     """PNG of the last output time: bodies coloured by v_z and a y-normal slice of the fluid
     velocity, by `xvfb-run -a -s "-screen 0 1280x1024x24" pvbatch --force-offscreen-rendering`
-    (Debian's ParaView 5.11 needs an X display with 24-bit colour even off screen). Returns the PNG path, or None (with a message) when pvbatch or
-    xvfb-run is missing."""
+    (Debian's ParaView 5.11 needs an X display with 24-bit colour even off screen). Returns the
+    PNG path, or None (with a message) when pvbatch or xvfb-run is missing."""
     pvbatch, xvfb = shutil.which("pvbatch"), shutil.which("xvfb-run")
     if not pvbatch or not xvfb:
         log("render: pvbatch or xvfb-run not found (Debian: apt-get install paraview "
@@ -224,8 +224,8 @@ def render_png(scene_path, bodies_xdmf, log=print):
     script = os.path.join(os.path.dirname(bodies_xdmf), "render.py")
     with open(script, "w") as f:
         f.write(RENDER)
-    cmd = [xvfb, "-a", "-s", "-screen 0 1280x1024x24", pvbatch, "--force-offscreen-rendering", script, bodies_xdmf,
-           fluid if os.path.exists(fluid) else "-", png]
+    cmd = [xvfb, "-a", "-s", "-screen 0 1280x1024x24", pvbatch, "--force-offscreen-rendering",
+           script, bodies_xdmf, fluid if os.path.exists(fluid) else "-", png]
     for _ in range(3):  # xvfb-run -a now and then hands out a display that is not ready yet
         proc = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
         if proc.returncode == 0 and os.path.exists(png):

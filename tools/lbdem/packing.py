@@ -129,8 +129,8 @@ def _cube_gaps(p, k, x, q, cand, rot):
         return np.zeros(0)
     m = int(np.count_nonzero(near))
     half = np.full(3, 0.5 * p.a)
-    return geometry.box_separation(dv[near], np.broadcast_to(geometry.rotation_matrices(q), (m, 3, 3)),
-                                   rot[cand[near]], half, half)
+    rq = np.broadcast_to(geometry.rotation_matrices(q), (m, 3, 3))
+    return geometry.box_separation(dv[near], rq, rot[cand[near]], half, half)
 
 
 def randomise(p, sweeps, seed, log=print):

@@ -77,7 +77,7 @@ def richardson_zaki(phi, re, exponent="richardson-zaki"):
 
 
 def batchelor(phi):
-    """Batchelor 1972, dilute random suspension of spheres in Stokes flow: u / u_T = 1 - 6.55 phi."""
+    """Batchelor 1972, dilute random suspension of spheres in Stokes flow: u/u_T = 1 - 6.55 phi."""
     return 1.0 - 6.55 * phi
 
 

@@ -45,7 +45,8 @@ class Study:
         self.nu, self.rho_f = float(f["viscosity"]), float(f.get("density", 1000.0))
         self.tau = float(f["tau"])
         self.dx = self.d / float(f["cells_per_diameter"])
-        self.dt = (self.tau - 0.5) / 3.0 * self.dx**2 / self.nu  # diffusive scaling: nu_lb = (tau - 1/2)/3
+        # Lattice viscosity (tau - 1/2) / 3 in units dx^2 / dt.
+        self.dt = (self.tau - 0.5) / 3.0 * self.dx**2 / self.nu
         self.clump = os.path.normpath(os.path.join(base, config["cube_clump"]))
         self.finished = []  # (steps, cells, wall s) of the runs of this call
 
@@ -155,8 +156,9 @@ class Study:
                              f"({res['wall_s']:.0f} s), skipped")
                     return res
             self.log(f"study: [{index}/{total}] {name}: the scene changed, running it again")
-        if os.path.isdir(folder):
+        elif os.path.isdir(folder):
             self.log(f"study: [{index}/{total}] {name}: unfinished earlier, restarting from t = 0")
+        if os.path.isdir(folder):
             shutil.rmtree(folder)
         os.makedirs(folder)
         if bodies is not None:
@@ -168,9 +170,9 @@ class Study:
         work = float(np.prod(cells)) * steps
         est = self.estimate(steps, float(np.prod(cells)))
         ranks = self.c["run"].get("ranks", [1, 1])
-        self.log(f"study: [{index}/{total}] {name}: {cells[0]}x{cells[1]}x{cells[2]} cells, {steps} "
-                 f"steps; estimated {est:.0f} s for this run, {est + remaining:.0f} s to the end "
-                 f"of the study; {' '.join(run.coupled_command(self.build, path, *ranks))}")
+        self.log(f"study: [{index}/{total}] {name}: {cells[0]}x{cells[1]}x{cells[2]} cells, "
+                 f"{steps} steps; estimated {est:.0f} s for this run, {est + remaining:.0f} s to "
+                 f"the end of the study; {' '.join(run.coupled_command(self.build, path, *ranks))}")
         wall, _ = run.run(self.build, path, ranks[0], ranks[1], timeout=None,
                           log=os.path.join(folder, "run.log"))
         res = {"name": name, "wall_s": wall, "cells": cells, "steps": steps,
@@ -264,8 +266,9 @@ class Study:
                 rows.append(row)
                 curves[(shape, phi)] = cv
                 self.log(f"study: {name}: phi {row['phi']:.4f}, u/u_T = {row['u_over_uT']:.4f} +- "
-                         f"{row['u_over_uT_error']:.4f} (Richardson-Zaki {row['richardson_zaki']:.4f},"
-                         f" Batchelor {row['batchelor']:.4f}), steady from {row['t_steady']:.3g} s")
+                         f"{row['u_over_uT_error']:.4f} (Richardson-Zaki "
+                         f"{row['richardson_zaki']:.4f}, Batchelor {row['batchelor']:.4f}), steady "
+                         f"from {row['t_steady']:.3g} s")
                 if render:
                     self.render(name)
         self.write_summary(rows)

@@ -92,7 +92,7 @@ class Structure(unittest.TestCase):
 
 class Autocorrelation(unittest.TestCase):
     def test_ornstein_uhlenbeck_decays_exponentially(self):
-        # Exact OU update with rate gamma: v_{k+1} = v_k e^{-gamma dt} + sqrt(1 - e^{-2 gamma dt}) xi;
+        # Exact OU update with rate gamma: v_{k+1} = v_k a + sqrt(1 - a^2) xi, a = e^{-gamma dt};
         # C(t) = exp(-gamma t).
         rng = np.random.default_rng(7)
         steps, bodies, a = 4000, 50, np.exp(-0.1)
