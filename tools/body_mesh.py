@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Body surfaces of a run for ParaView (docs/study.md, "Pictures"): writes
 <name>_surfaces.h5 + <name>_surfaces.xdmf next to the body trace, and with --png a picture of
 the last output time (bodies coloured by v_z, a slice of the fluid velocity) by pvbatch.

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Writes the study's initial packings (docs/study.md, "Packing"): N bodies on a simple cubic
 lattice at phi = 0.4, randomised by hard-body Monte Carlo (spheres of diameter d and
 volume-equivalent cubes at once), scaled to each solid fraction; one bodies file per phi for

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Plots the settling of a coupled run: the mean body velocity in the zero-volume-flux frame
 against time, normalised by the single-body terminal velocity u_T of this code, with the
 Richardson-Zaki expectation (n from Re, default the study's 16.8) for the run's solid fraction.

@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Validation checks of coupled scenes against published numbers.
 
 Each sub-command launches the scene through the real entry point (mpirun MPMD), reads the
