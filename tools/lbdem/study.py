@@ -215,7 +215,9 @@ class Study:
                "tau": self.tau, "u_T": u_t, "settling_velocity": mean, "error": err,
                "u_over_uT": mean / u_t, "u_over_uT_error": err / u_t,
                "richardson_zaki": references.richardson_zaki(phi_m, self.c["reynolds"]),
-               "batchelor": references.batchelor(phi_m), "t_steady": float(tr.time[start]),
+               # Batchelor's dilute limit only where it is meant to hold.
+               "batchelor": references.batchelor(phi_m) if phi_m <= 0.1 else None,
+               "t_steady": float(tr.time[start]),
                "t_end": float(tr.time[-1]), "snapshots_analysed": int(len(x)),
                "wall_s": result["wall_s"]}
         curves = {"time": tr.time, "speed": speed, "r": r, "g": g, "rc": rc, "C": c,
@@ -267,7 +269,7 @@ class Study:
                 curves[(shape, phi)] = cv
                 self.log(f"study: {name}: phi {row['phi']:.4f}, u/u_T = {row['u_over_uT']:.4f} +- "
                          f"{row['u_over_uT_error']:.4f} (Richardson-Zaki "
-                         f"{row['richardson_zaki']:.4f}, Batchelor {row['batchelor']:.4f}), steady "
+                         f"{row['richardson_zaki']:.4f}, Batchelor {row['batchelor']}), steady "
                          f"from {row['t_steady']:.3g} s")
                 if render:
                     self.render(name)
