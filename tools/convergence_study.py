@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Grid convergence of the fluid solver against analytic solutions, and error against run time.
 
 Runs fluid_app on each validation scene (configs/validation/fluid/<case>.yaml) at several

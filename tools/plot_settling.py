@@ -1,15 +1,19 @@
-#!/usr/bin/env python3
-"""Plots the settling of a coupled run: mean body velocity against time, in the frame of zero
-volume flux, with the Richardson-Zaki expectation for the scene's solid fraction.
+#!/usr/bin/python3
+"""Plots the settling of a coupled run: the mean body velocity in the zero-volume-flux frame
+against time, normalised by the single-body terminal velocity u_T of this code, with the
+Richardson-Zaki expectation (n from Re, default the study's 16.8) for the run's solid fraction.
 
-    /usr/bin/python3 tools/plot_settling.py configs/demo/settling_cubes.yaml [--u-terminal 0.0457]
+    /usr/bin/python3 tools/plot_settling.py SCENE --terminal-scene SINGLE_BODY_SCENE
+    /usr/bin/python3 tools/plot_settling.py SCENE --u-terminal 0.0457
 
-Reads the DEM body trace (<dem.output.directory>/<name>_bodies.csv) and, if the scene writes
-it, the fluid series (<fluid.output.directory>/<name>_series.csv); writes
-<dem.output.directory>/<name>_settling.png and prints the late-time mean.
+The settling velocity is <u_p,z> - j with j the volume flux, which is the fluid series' mean_uz
+(it averages over all nodes, bodies included; docs/study.md, "Zero-volume-flux frame"). u_T is
+the mean settling speed over the last 20 % of a single-body run at the same resolution and tau
+(--terminal-scene), or given (--u-terminal); without either the paper's 0.0457 m/s is used and
+the plot says so. Reads <dem dir>/<name>_bodies.csv and <fluid dir>/<name>_series.csv; writes
+<dem dir>/<name>_settling.png and prints the steady-state mean with its block-averaged error.
 """
 import argparse
-import csv
 import math
 import os
 import sys
@@ -18,79 +22,99 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-import yaml  # noqa: E402
+import numpy as np  # noqa: E402
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "analysis"))
-import references  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from lbdem import analysis, io, references  # noqa: E402
 
-
-def resolve(scene, path):
-    return os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(scene)), path))
+PAPER_CUBE_U_T = 0.0457  # m/s, the paper's single cube (a = 0.283 mm)
 
 
-def main():
+def shape_volume(shape):
+    kind = shape["kind"]
+    if kind == "sphere":
+        return math.pi / 6 * shape["diameter"] ** 3
+    if kind == "cube":
+        return shape["edge"] ** 3
+    if kind == "cuboid":
+        return float(np.prod(shape["edges"]))
+    if kind == "ellipsoid":
+        return 4 / 3 * math.pi * float(np.prod(shape["semi_axes"]))
+    raise ValueError(f"plot_settling: shape kind {kind} has no volume formula here")
+
+
+def terminal_velocity(scene_path):
+    """Mean settling speed of body 0 over the last 20 % of a single-body run, and its change
+    across that window (relative)."""
+    tr = io.Trace(io.trace_path(scene_path))
+    speed = -tr["vz"][:, 0]
+    tail = speed[tr.time >= 0.8 * tr.time[-1]]
+    return float(tail.mean()), float((tail[-1] - tail[0]) / tail.mean())
+
+
+def settling(scene_path, u_t, reynolds):
+    """Everything the plot shows, as a dict."""
+    s = io.load_scene(scene_path)
+    tr = io.Trace(io.trace_path(scene_path, s))
+    series_file = io.series_path(scene_path, s)
+    if not os.path.exists(series_file):
+        raise SystemExit(f"plot_settling: {series_file} is missing: the zero-volume-flux frame "
+                         "needs the fluid series (fluid.output.series in the scene)")
+    series = io.read_series(series_file)
+    box = s["fluid"]["domain"]
+    if len(s["shapes"]) != 1:
+        raise SystemExit("plot_settling: one shape per scene (the solid fraction needs its volume)")
+    phi = len(tr.id) * shape_volume(s["shapes"][0]) / (box[0] * box[1] * box[2])
+    j = np.interp(tr.time, series["time_s"], series["mean_uz_m_s"])
+    speed = -analysis.settling_velocity(tr["vz"].mean(axis=1), j)
+    start = analysis.mser_start(speed)
+    mean, err = analysis.block_average(speed[start:])
+    return {"name": s["name"], "bodies": len(tr.id), "phi": phi, "time": tr.time, "speed": speed,
+            "t_steady": tr.time[start], "mean": mean, "error": err, "u_t": u_t,
+            "expected": u_t * references.richardson_zaki(phi, reynolds),
+            "n": references.richardson_zaki_exponent(reynolds),
+            "png": os.path.join(io.dem_output_dir(scene_path, s), s["name"] + "_settling.png")}
+
+
+def main(argv=None):
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     p.add_argument("scene")
-    p.add_argument("--u-terminal", type=float, default=0.0457,
-                   help="single-body terminal velocity in m/s (default: the paper's cube)")
-    p.add_argument("--reynolds", type=float, default=12.9, help="Re for the R-Z exponent")
-    args = p.parse_args()
-    with open(args.scene) as f:
-        s = yaml.safe_load(f)
-    name = s["name"]
-    dem_dir = resolve(args.scene, s["dem"].get("output", {}).get("directory", "."))
-    rows = list(csv.DictReader(open(os.path.join(dem_dir, name + "_bodies.csv"))))
-    by_time = {}
-    for r in rows:
-        by_time.setdefault(float(r["time"]), []).append(float(r["vz"]))
-    times = sorted(by_time)
-    up = [sum(by_time[t]) / len(by_time[t]) for t in times]
-
-    # Solid fraction from the bodies: volume of one cube or sphere times the count.
-    box = s["fluid"]["domain"]
-    vbox = box[0] * box[1] * box[2]
-    shape = s["shapes"][0]
-    v1 = shape["edge"] ** 3 if shape["kind"] == "cube" else math.pi / 6 * shape["diameter"] ** 3
-    nb = len(by_time[times[0]])
-    phi = nb * v1 / vbox
-
-    # Zero-volume-flux frame: j = phi <u_p> + (1 - phi) <u_f> (fluid mean from the series).
-    uf = {}
-    out = s["fluid"].get("output", {})
-    series = os.path.join(resolve(args.scene, out.get("directory", ".")), name + "_series.csv")
-    if os.path.exists(series):
-        for r in csv.DictReader(open(series)):
-            key = [k for k in r if k.strip().startswith("mean_uz") or k.strip() == "uz"]
-            if key:
-                uf[float(r["time_s"])] = float(r[key[0]])
-    def fluid_at(t):
-        if not uf:
-            return 0.0
-        tt = min(uf, key=lambda x: abs(x - t))
-        return uf[tt]
-    us = [-(u - (phi * u + (1 - phi) * fluid_at(t))) for t, u in zip(times, up)]
-
-    expected = args.u_terminal * references.richardson_zaki(phi, args.reynolds)
-    late = [u for t, u in zip(times, us) if t >= 0.75 * times[-1]]
-    mean_late = sum(late) / len(late)
-    print(f"{name}: {nb} bodies, solid fraction {phi:.3f}; mean settling velocity over the last "
-          f"quarter {mean_late:.4g} m/s; Richardson-Zaki (n = "
-          f"{references.richardson_zaki_exponent(args.reynolds):.2f}) expects {expected:.4g} m/s "
-          f"(u_T = {args.u_terminal} m/s)")
-
+    g = p.add_mutually_exclusive_group()
+    g.add_argument("--terminal-scene", help="scene of a single-body run (already run) at the "
+                                            "same resolution and tau")
+    g.add_argument("--u-terminal", type=float, help="single-body terminal velocity in m/s")
+    p.add_argument("--reynolds", type=float, default=16.8,
+                   help="single-body Re for the Richardson-Zaki exponent (the study: 16.8)")
+    args = p.parse_args(argv)
+    source = "given"
+    if args.terminal_scene:
+        u_t, drift = terminal_velocity(args.terminal_scene)
+        source = f"single-body run, change {100 * drift:+.2f} % over its last 20 %"
+    elif args.u_terminal:
+        u_t = args.u_terminal
+    else:
+        u_t, source = PAPER_CUBE_U_T, "the paper's cube, NOT this code's: pass --terminal-scene"
+    r = settling(args.scene, u_t, args.reynolds)
+    print(f"{r['name']}: {r['bodies']} bodies, solid fraction {r['phi']:.4f}; settling velocity in "
+          f"the zero-volume-flux frame {r['mean']:.5g} +- {r['error']:.2g} m/s (steady from "
+          f"t = {r['t_steady']:.3g} s); u/u_T = {r['mean'] / u_t:.4f} +- {r['error'] / u_t:.4f} "
+          f"with u_T = {u_t:.5g} m/s ({source}); Richardson-Zaki (n = {r['n']:.2f}) expects "
+          f"{r['expected'] / u_t:.4f}")
     fig, ax = plt.subplots(figsize=(6, 4))
-    ax.plot(times, us, label="mean settling velocity (zero volume flux frame)")
-    ax.axhline(expected, color="k", ls="--", label=f"Richardson-Zaki, phi = {phi:.2f}")
-    ax.axhline(args.u_terminal, color="gray", ls=":", label="single body u_T")
+    ax.plot(r["time"], r["speed"] / u_t, label="bodies, zero-volume-flux frame")
+    ax.axvline(r["t_steady"], color="gray", lw=0.8, ls=":", label="steady state from")
+    ax.axhline(r["expected"] / u_t, color="k", ls="--",
+               label=f"Richardson-Zaki, phi = {r['phi']:.3f}, n = {r['n']:.2f}")
     ax.set_xlabel("time (s)")
-    ax.set_ylabel("settling velocity (m/s)")
-    ax.set_title(f"{name}: {nb} bodies")
+    ax.set_ylabel(f"u / u_T  (u_T = {u_t:.4g} m/s, {source.split(',')[0]})", fontsize=8)
+    ax.set_title(f"{r['name']}: {r['bodies']} bodies; steady {r['mean'] / u_t:.3f} "
+                 f"+- {r['error'] / u_t:.3f}", fontsize=9)
     ax.legend(fontsize=8)
     fig.tight_layout()
-    png = os.path.join(dem_dir, name + "_settling.png")
-    fig.savefig(png, dpi=120)
-    print(f"plot: {png}")
+    fig.savefig(r["png"], dpi=120)
+    print(f"plot: {r['png']}")
+    return 0
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

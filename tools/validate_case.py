@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Validation checks of coupled scenes against published numbers.
 
 Each sub-command launches the scene through the real entry point (mpirun MPMD), reads the
@@ -19,9 +19,8 @@ import math
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "analysis"))
-import coupled_case  # noqa: E402
-import references  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from lbdem import io, references, run  # noqa: E402
 
 RESULTS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "runs", "validation",
                        "results.csv")
@@ -29,7 +28,7 @@ RESULTS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "runs",
 
 def case_name(args):
     """--case, or else the scene's name."""
-    return args.case or coupled_case.scene_info(args.scene)[0]["name"]
+    return args.case or io.load_scene(args.scene)["name"]
 
 
 def append_row(case, resolution, tau, quantity, reference, result, error, wall, ranks):
@@ -43,7 +42,7 @@ def append_row(case, resolution, tau, quantity, reference, result, error, wall, 
 
 
 def report(case, scene, quantity, reference, result, wall, ranks, tolerance):
-    s, _ = coupled_case.scene_info(scene)
+    s = io.load_scene(scene)
     f = s.get("fluid", {})
     size = min((sh.get("diameter") or sh.get("edge") or 0) for sh in s.get("shapes", [{}]))
     res = size / f["dx"] if f and size else float("nan")
@@ -61,9 +60,8 @@ def report(case, scene, quantity, reference, result, wall, ranks, tolerance):
 
 def launch(args, ranks):
     fr, dr = (int(x) for x in ranks.split(":"))
-    wall, out = coupled_case.run(args.build, args.scene, fr, dr)
-    _, trace = coupled_case.scene_info(args.scene)
-    return wall, coupled_case.read_trace(trace)
+    wall, _ = run.run(args.build, args.scene, fr, dr)
+    return wall, io.read_trace_by_body(io.trace_path(args.scene))
 
 
 def settling_speeds(rows, axis="vz"):
@@ -115,7 +113,7 @@ def cmd_invariance(args):
     first, last = base[0][0], base[0][-1]
     print(f"invariance: body 0 from ({first['x']:.4g}, {first['y']:.4g}, {first['z']:.4g}) to "
           f"({last['x']:.4g}, {last['y']:.4g}, {last['z']:.4g}) m (positions wrapped into the box)")
-    s, _ = coupled_case.scene_info(args.scene)
+    s = io.load_scene(args.scene)
     append_row(case_name(args), "", s["fluid"]["tau"], "largest relative trace difference", "0",
                f"{worst:.3g}", f"{worst:.3g}", sum(w for _, w, _ in runs),
                " ".join(args.ranks_list))
@@ -143,9 +141,9 @@ def cmd_drag(args):
     the paper's F_t = F_d / (1 - phi); both are printed, with the balance F_d / (rho g V_f).
     """
     wall, bodies = launch(args, args.ranks)
-    s, _ = coupled_case.scene_info(args.scene)
+    s = io.load_scene(args.scene)
     f = s["fluid"]
-    series = coupled_case.read_series(coupled_case.fluid_series_path(args.scene))
+    series = io.read_rows(io.series_path(args.scene))
     axis = max(range(3), key=lambda k: abs(f["body_force"][k]))
     g = abs(f["body_force"][axis])
     rho, mu = f["density"], f["density"] * f["viscosity"]
@@ -179,7 +177,7 @@ def cmd_spin(args):
     The periodic images change it by O(phi) (rotlet sums); the box is chosen with phi < 1 %.
     """
     wall, bodies = launch(args, args.ranks)
-    s, _ = coupled_case.scene_info(args.scene)
+    s = io.load_scene(args.scene)
     f = s["fluid"]
     mu = f["density"] * f["viscosity"]
     a = s["shapes"][0]["diameter"] / 2
@@ -226,7 +224,7 @@ def cmd_rotation(args):
         ok = ok and t1 < t0 - args.max_tilt_change
     else:
         ok = ok and abs(t1 - t0) > args.max_tilt_change
-    s, _ = coupled_case.scene_info(args.scene)
+    s = io.load_scene(args.scene)
     append_row(case_name(args), "", s["fluid"]["tau"], "tilt (deg) start -> end",
                f"expect {args.expect}", f"{t0:.1f} -> {t1:.1f}", "", wall, args.ranks)
     print("rotation: " + ("as expected" if ok else "FAILED: not as expected") +

@@ -1,5 +1,7 @@
 #include "coupler_lib/scene/bodies_section.hpp"
 
+#include "coupler_lib/scene/bodies_file.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -208,11 +210,14 @@ std::vector<BodyParams> generate_bodies(const BodyGenerator& g, const Section& w
 
 std::vector<BodyParams> parse_bodies(Section& root, const std::vector<ShapeParams>& shapes) {
   std::vector<BodyParams> out;
-  for (auto& s : root.list("bodies", "bodies: single bodies and generators")) {
+  for (auto& s : root.list("bodies", "bodies: single bodies, generators and files")) {
     if (s.has("generate")) {
       const auto g = parse_generator(s, shapes);
       const auto placed = generate_bodies(g, s);
       out.insert(out.end(), placed.begin(), placed.end());
+    } else if (s.has("file")) {
+      const auto read = read_bodies_file(s, shapes);
+      out.insert(out.end(), read.begin(), read.end());
     } else {
       out.push_back(parse_body(s, shapes));
     }

@@ -1,9 +1,10 @@
 #pragma once
 // The `bodies:` list of a scene: where bodies start and how they move initially. An entry is
-// either one body or a generator (`generate: lattice | random`) that places `count` bodies (or
-// enough for a `solid_fraction`) without overlap inside a region, with random orientations
-// drawn from a seed. Generators are expanded while parsing, deterministically (own RNG
-// arithmetic, no implementation-defined distributions), so both binaries get the same list.
+// one body, a CSV file of bodies (`file:`, bodies_file.hpp) or a generator (`generate: lattice |
+// random`) that places `count` bodies (or enough for a `solid_fraction`) without overlap inside a
+// region, with random orientations drawn from a seed. Generators are expanded while parsing,
+// deterministically (own RNG arithmetic, no implementation-defined distributions), so both
+// binaries get the same list.
 #include <array>
 #include <cstdint>
 #include <optional>

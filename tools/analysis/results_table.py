@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Prints runs/validation/results.csv (appended to by tools/validate_case.py) as the markdown
 table of the README; with --last, only the latest row of each (case, resolution, tau,
 ranks).

@@ -1,6 +1,6 @@
-"""Reference values the validation cases are judged against.
+"""Reference formulas the validation cases and the study are judged against, in one place.
 
-Every formula cites its source; the numbers are those of shared/reference/reference-data.md.
+Every formula cites its source (paper by name).
 """
 import math
 
@@ -47,7 +47,7 @@ CUBE_SPHERICITY = (math.pi / 6.0) ** (1.0 / 3.0)
 
 
 def richardson_zaki_exponent(re):
-    """Richardson & Zaki 1954 exponent n(Re)."""
+    """Richardson & Zaki 1954 exponent n(Re), Re of the single body at its terminal velocity."""
     if re < 0.2:
         return 4.65
     if re < 1.0:
@@ -57,9 +57,47 @@ def richardson_zaki_exponent(re):
     return 2.39
 
 
-def richardson_zaki(phi, re):
-    """Hindered settling velocity ratio u / u_T = (1 - phi)^n."""
-    return (1.0 - phi) ** richardson_zaki_exponent(re)
+def garside_al_dibouni_exponent(re):
+    """Garside & Al-Dibouni 1977: n = (5.1 + 0.27 Re^0.9) / (1 + 0.1 Re^0.9), smooth in Re."""
+    return (5.1 + 0.27 * re**0.9) / (1.0 + 0.1 * re**0.9)
+
+
+def rowe_exponent(re):
+    """Rowe 1987: n = (4.7 + 0.41 Re^0.75) / (1 + 0.175 Re^0.75), smooth in Re."""
+    return (4.7 + 0.41 * re**0.75) / (1.0 + 0.175 * re**0.75)
+
+
+EXPONENTS = {"richardson-zaki": richardson_zaki_exponent,
+             "garside-al-dibouni": garside_al_dibouni_exponent, "rowe": rowe_exponent}
+
+
+def richardson_zaki(phi, re, exponent="richardson-zaki"):
+    """Hindered settling velocity ratio u / u_T = (1 - phi)^n, n(Re) by the named correlation."""
+    return (1.0 - phi) ** EXPONENTS[exponent](re)
+
+
+def batchelor(phi):
+    """Batchelor 1972, dilute random suspension of spheres in Stokes flow: u/u_T = 1 - 6.55 phi."""
+    return 1.0 - 6.55 * phi
+
+
+def schiller_naumann_cd(re):
+    """Drag coefficient of a sphere, Schiller & Naumann 1933 (Re < 800)."""
+    return 24.0 / re * (1.0 + 0.15 * re**0.687)
+
+
+def sphere_terminal_velocity(d, rho_p, rho_f, mu, g=9.81):
+    """Terminal velocity of a sphere with the Schiller-Naumann drag: solves
+    (pi/6) d^3 (rho_p - rho_f) g = Cd(Re) (pi/8) rho_f u^2 d^2 for u by bisection."""
+    def excess(u):
+        re = rho_f * u * d / mu
+        return (math.pi / 6) * d**3 * (rho_p - rho_f) * g - \
+            schiller_naumann_cd(re) * (math.pi / 8) * rho_f * u * u * d * d
+    lo, hi = 1e-12, (rho_p - rho_f) * g * d * d / (18 * mu)  # Stokes is an upper bound
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if excess(mid) > 0 else (lo, mid)
+    return 0.5 * (lo + hi)
 
 
 # ten Cate et al. 2002: peak settling speed u_max (m/s) in the closed box.

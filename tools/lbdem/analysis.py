@@ -1,0 +1,163 @@
+"""Analysis of a settling run (docs/study.md, "Analysis"): steady state, settling velocity in the
+zero-volume-flux frame with a block-averaged error bar, g(r), C(r) of delta v_z, VACF of v_xy, and
+orientation statistics of cubes. Functions take plain arrays: positions (T, N, 3), velocities
+(T, N, 3), quaternions (T, N, 4), box edges (3,)."""
+import numpy as np
+
+from . import geometry
+
+
+def mser_start(x, batch=5):
+    """Start of the steady state of a series by MSER-5 (White 1997; Franklin & White 2008): the
+    truncation d (a multiple of `batch` samples, at most half the batches) that minimises the
+    squared standard error of the mean of what remains, var(x[d:]) / (n - d). Returns the index."""
+    x = np.asarray(x, float)
+    nb = len(x) // batch
+    if nb < 4:
+        return 0
+    means = x[: nb * batch].reshape(nb, batch).mean(axis=1)
+    best, best_d = np.inf, 0
+    for d in range(nb // 2 + 1):
+        rest = means[d:]
+        score = rest.var() / len(rest)
+        if score < best:
+            best, best_d = score, d
+    return best_d * batch
+
+
+def block_average(x, min_blocks=8):
+    """Mean of a correlated series and its standard error by blocking (Flyvbjerg & Petersen 1989):
+    the standard error of the block means is computed for blocks of 1, 2, 4, ... samples; it
+    rises with the block size until blocks are longer than the correlation time and then levels
+    off. Returns (mean, error), the error being the largest estimate with >= min_blocks blocks."""
+    x = np.asarray(x, float)
+    mean = x.mean()
+    err = x.std(ddof=1) / np.sqrt(len(x)) if len(x) > 1 else np.nan
+    y = x
+    while len(y) // 2 >= min_blocks:
+        y = 0.5 * (y[: len(y) // 2 * 2 : 2] + y[1 : len(y) // 2 * 2 : 2])
+        err = max(err, y.std(ddof=1) / np.sqrt(len(y)))
+    return mean, err
+
+
+def settling_velocity(up_z, j_z):
+    """Mean body velocity in the zero-volume-flux frame, V = <u_p,z> - j_z (signed: negative for
+    bodies settling along -z).
+
+    j is the volume flux phi <u_p> + (1 - phi) <u_f> (a zero-volume-flux frame is the frame where
+    j = 0: a closed container, Richardson & Zaki 1954). The fluid series' mean_uz averages the
+    lattice velocity over ALL nodes, and inside a body the HLBM velocity is the body's, so
+    mean_uz is j itself (not <u_f>): V = <u_p> - mean_uz. Adding phi <u_p> to mean_uz again (as
+    an earlier plot did) counts the bodies twice and gives (1 - phi)(<u_p> - j)."""
+    return np.asarray(up_z, float) - np.asarray(j_z, float)
+
+
+def slip_velocity(v_zero_flux, phi):
+    """Relative velocity of bodies and fluid, <u_p> - <u_f> = V / (1 - phi), from the settling
+    velocity V in the zero-volume-flux frame (j = phi u_p + (1 - phi) u_f = 0)."""
+    return np.asarray(v_zero_flux, float) / (1.0 - phi)
+
+
+def pair_histogram(x, box, edges):
+    i, j, d = geometry.pair_separations(x, box)
+    r = np.linalg.norm(d, axis=-1)
+    return np.histogram(r, bins=edges)[0], i, j, r
+
+
+def radial_distribution(positions, box, r_max=None, bins=50):
+    """g(r) as in the paper: <N_pairs(r, r + dr)> / (N (N - 1) / 2 * shell volume / V), averaged
+    over configurations, periodic minimum image (r_max <= L_min / 2). The exact shell volume
+    4/3 pi ((r + dr)^3 - r^3) replaces 4 pi r^2 dr. Returns (bin centres, g)."""
+    positions = np.asarray(positions, float)
+    if positions.ndim == 2:
+        positions = positions[None]
+    box = np.asarray(box, float)
+    r_max = r_max or 0.5 * box.min()
+    edges = np.linspace(0, r_max, bins + 1)
+    n = positions.shape[1]
+    counts = np.zeros(bins)
+    for x in positions:
+        counts += pair_histogram(x, box, edges)[0]
+    shell = 4.0 / 3.0 * np.pi * (edges[1:] ** 3 - edges[:-1] ** 3)
+    ideal = 0.5 * n * (n - 1) * shell / np.prod(box)
+    return 0.5 * (edges[1:] + edges[:-1]), counts / (len(positions) * ideal)
+
+
+def velocity_correlation(positions, vz, box, r_max=None, bins=20):
+    """C(r) = <dv_z(0) dv_z(r)> / <dv_z^2> over pairs at distance r (the paper), dv_z = v_z minus
+    the mean over bodies at that time, up to L/2 (minimum image). Returns (bin centres, C);
+    bins without pairs give nan."""
+    positions = np.asarray(positions, float)
+    vz = np.asarray(vz, float)
+    if positions.ndim == 2:
+        positions, vz = positions[None], vz[None]
+    box = np.asarray(box, float)
+    r_max = r_max or 0.5 * box.min()
+    edges = np.linspace(0, r_max, bins + 1)
+    prod = np.zeros(bins)
+    count = np.zeros(bins)
+    var = 0.0
+    for x, v in zip(positions, vz):
+        dv = v - v.mean()
+        var += np.mean(dv * dv)
+        i, j, d = geometry.pair_separations(x, box)
+        r = np.linalg.norm(d, axis=-1)
+        k = np.digitize(r, edges) - 1
+        ok = (k >= 0) & (k < bins)
+        prod += np.bincount(k[ok], weights=(dv[i] * dv[j])[ok], minlength=bins)
+        count += np.bincount(k[ok], minlength=bins)
+    var /= len(positions)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        c = prod / count / var
+    return 0.5 * (edges[1:] + edges[:-1]), c
+
+
+def vacf(v, max_lag=None, subtract_mean=True):
+    """C(t) = <v(t0 + t) . v(t0)> / <v(t0)^2> over bodies and time origins t0 (the paper, for the
+    horizontal components: pass v (T, N, 2) = (v_x, v_y)). With subtract_mean the body-mean
+    velocity at each time is removed first (the slow horizontal drift of the whole suspension the
+    paper notes). Returns C at lags 0 .. max_lag (in output intervals)."""
+    v = np.asarray(v, float)
+    if subtract_mean:
+        v = v - v.mean(axis=1, keepdims=True)
+    t = v.shape[0]
+    max_lag = t // 2 if max_lag is None else min(max_lag, t - 1)
+    c = np.array([np.mean(np.sum(v[lag:] * v[: t - lag], axis=-1)) for lag in range(max_lag + 1)])
+    return c / c[0]
+
+
+def axes_against_gravity(q, gravity=(0.0, 0.0, -1.0)):
+    """|cos| of the angle between each body axis and gravity: (..., 3) from quaternions (..., 4).
+    For uniformly random orientations each is uniform on [0, 1] (mean 1/2); a cube falling
+    face-down has one axis at 1 and two at 0."""
+    g = np.asarray(gravity, float)
+    g = g / np.linalg.norm(g)
+    r = geometry.rotation_matrices(q)
+    return np.abs(np.einsum("...ik,i->...k", r, g))
+
+
+def contact_face_angles(positions, q, box, edge, gap):
+    """Angles (degrees) between the most nearly parallel faces of cube pairs closer than `gap`
+    (separating-axis lower bound of the distance between the cubes): min over the 3 x 3 pairs of
+    face normals of arccos |n_a . n_b|. 0 means a face-parallel contact; for independent random
+    orientations the angle is spread over 0 - 54.7 degrees. Returns a 1-d array over all
+    configurations."""
+    positions = np.asarray(positions, float)
+    q = np.asarray(q, float)
+    if positions.ndim == 2:
+        positions, q = positions[None], q[None]
+    half = np.full(3, 0.5 * edge)
+    out = []
+    for x, qq in zip(positions, q):
+        i, j, d = geometry.pair_separations(x, box)
+        near = np.linalg.norm(d, axis=-1) < np.sqrt(3) * edge + gap
+        i, j, d = i[near], j[near], d[near]
+        if len(i) == 0:
+            continue
+        r = geometry.rotation_matrices(qq)
+        sep = geometry.box_separation(d, r[i], r[j], half, half)
+        touch = sep < gap
+        ra, rb = r[i[touch]], r[j[touch]]
+        cos = np.abs(np.einsum("mik,mil->mkl", ra, rb)).reshape(-1, 9).max(axis=1)
+        out.append(np.degrees(np.arccos(np.clip(cos, -1, 1))))
+    return np.concatenate(out) if out else np.zeros(0)

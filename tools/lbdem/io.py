@@ -1,0 +1,148 @@
+"""Reading a run's scene and outputs (the README: "Scene files", body output, fluid output).
+
+Paths in a scene are relative to the scene file's folder. A coupled run writes
+  <dem.output.directory>/<name>_bodies.csv   one row per body and output time
+                                             (time,id,x,y,z,vx,vy,vz,wx,wy,wz,qw,qx,qy,qz,fx..tz)
+  <dem.output.directory>/<name>_bodies.h5    one group per snapshot (position, orientation, ...)
+  <fluid.output.directory>/<name>_series.csv the fluid's domain means (time_s, mean_uz_m_s, ...)
+"""
+import csv
+import os
+
+import numpy as np
+import yaml
+
+
+def load_scene(path):
+    with open(path) as f:
+        return yaml.safe_load(f)
+
+
+def resolve(scene_path, path):
+    """A path of the scene, relative to the scene file's folder when relative."""
+    return os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(scene_path)), path))
+
+
+def dem_output_dir(scene_path, scene=None):
+    s = scene or load_scene(scene_path)
+    return resolve(scene_path, s.get("dem", {}).get("output", {}).get("directory", "."))
+
+
+def trace_path(scene_path, scene=None):
+    s = scene or load_scene(scene_path)
+    return os.path.join(dem_output_dir(scene_path, s), s["name"] + "_bodies.csv")
+
+
+def bodies_h5_path(scene_path, scene=None):
+    s = scene or load_scene(scene_path)
+    return os.path.join(dem_output_dir(scene_path, s), s["name"] + "_bodies.h5")
+
+
+def series_path(scene_path, scene=None):
+    s = scene or load_scene(scene_path)
+    out = s.get("fluid", {}).get("output", {}).get("directory", ".")
+    return os.path.join(resolve(scene_path, out), s["name"] + "_series.csv")
+
+
+def read_rows(path):
+    """List of rows (dicts of floats) of a numeric CSV."""
+    with open(path) as f:
+        return [{k: float(v) for k, v in row.items()} for row in csv.DictReader(f)]
+
+
+def read_trace_by_body(path):
+    """{body id: list of rows (dicts of floats)} in time order."""
+    bodies = {}
+    for r in read_rows(path):
+        bodies.setdefault(int(r["id"]), []).append(r)
+    return bodies
+
+
+class Trace:
+    """The body trace as arrays: time (T,), id (N,), and per column an array (T, N) sorted by id.
+
+    Only output times at which every body has a row are kept (a run cut short may end with a
+    partial time)."""
+
+    def __init__(self, path):
+        data = np.genfromtxt(path, delimiter=",", names=True)
+        data = np.atleast_1d(data)
+        times, inverse = np.unique(data["time"], return_inverse=True)
+        ids = np.unique(data["id"]).astype(int)
+        count = np.bincount(inverse, minlength=len(times))
+        full = count == len(ids)
+        self.id = ids
+        col = np.searchsorted(ids, data["id"].astype(int))
+        self.columns = {}
+        for name in data.dtype.names:
+            if name in ("time", "id"):
+                continue
+            a = np.full((len(times), len(ids)), np.nan)
+            a[inverse, col] = data[name]
+            self.columns[name] = a[full]
+        self.time = times[full]
+
+    def __getitem__(self, name):
+        return self.columns[name]
+
+    def vectors(self, prefix):
+        """(T, N, 3) array of the columns prefix+x, y, z (e.g. 'v' -> vx, vy, vz; '' -> x, y, z)."""
+        return np.stack([self.columns[prefix + c] for c in "xyz"], axis=-1)
+
+    def quaternions(self):
+        return np.stack([self.columns["q" + c] for c in "wxyz"], axis=-1)
+
+
+def read_series(path):
+    """The fluid's domain means as {column: array}."""
+    data = np.atleast_1d(np.genfromtxt(path, delimiter=",", names=True))
+    return {name: np.asarray(data[name]) for name in data.dtype.names}
+
+
+def read_bodies_h5(path):
+    """Snapshots of the body HDF5 output: list of dicts (time, position, orientation, velocity,
+    angular_velocity, id, shape), in time order."""
+    import h5py
+    out = []
+    with h5py.File(path, "r") as f:
+        for name in sorted(k for k in f if k.startswith("snapshot_")):
+            g = f[name]
+            snap = {k: g[k][()] for k in ("position", "orientation", "velocity",
+                                          "angular_velocity", "id", "shape")}
+            snap["id"] = snap["id"].reshape(-1)
+            snap["shape"] = snap["shape"].reshape(-1)
+            snap["time"] = float(g.attrs["time"])
+            out.append(snap)
+    return out
+
+
+def write_bodies_csv(path, position, orientation=None, velocity=None, comment=""):
+    """A bodies file for the scene key `bodies: [{file: ...}]` (docs/study.md): columns x, y, z and
+    optionally qw, qx, qy, qz and vx, vy, vz, full precision."""
+    cols = ["x", "y", "z"]
+    parts = [np.asarray(position, float)]
+    if orientation is not None:
+        cols += ["qw", "qx", "qy", "qz"]
+        parts.append(np.asarray(orientation, float))
+    if velocity is not None:
+        cols += ["vx", "vy", "vz"]
+        parts.append(np.asarray(velocity, float))
+    table = np.hstack(parts)
+    with open(path, "w") as f:
+        for line in comment.splitlines():
+            f.write("# " + line + "\n")
+        f.write(",".join(cols) + "\n")
+        for row in table:
+            f.write(",".join(repr(float(v)) for v in row) + "\n")
+
+
+def read_bodies_csv(path):
+    """(positions (N, 3), orientations (N, 4) or None) of a bodies file ('#' lines skipped)."""
+    with open(path) as f:
+        lines = [line for line in f if line.strip() and not line.lstrip().startswith("#")]
+    data = np.atleast_1d(np.genfromtxt(lines, delimiter=",", names=True))
+    pos = np.stack([data[c] for c in "xyz"], axis=-1)
+    q = None
+    if "qw" in data.dtype.names:
+        q = np.stack([data["q" + c] for c in "wxyz"], axis=-1)
+    return pos, q

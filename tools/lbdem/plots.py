@@ -1,0 +1,72 @@
+"""The study's figures, in the paper's style: u/u_T against phi with Richardson-Zaki and
+Batchelor, g(r), C(r) of delta v_z, and the VACF of v_xy (one PNG each)."""
+import os
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+from . import references  # noqa: E402
+
+MARKERS = {"sphere": ("o", "tab:blue"), "cube": ("s", "tab:red")}
+
+
+def settling_plot(rows, reynolds, path):
+    fig, ax = plt.subplots(figsize=(5.5, 4))
+    phi = np.linspace(0.0, 0.45, 100)
+    ax.plot(phi, references.richardson_zaki(phi, reynolds), "k-",
+            label=f"Richardson-Zaki, Re = {reynolds:g} "
+                  f"(n = {references.richardson_zaki_exponent(reynolds):.2f})")
+    ax.plot(phi[phi < 0.1], references.batchelor(phi[phi < 0.1]), "k--",
+            label="Batchelor, 1 - 6.55 phi")
+    for shape in ("sphere", "cube"):
+        sel = [r for r in rows if r["shape"] == shape]
+        if not sel:
+            continue
+        m, c = MARKERS[shape]
+        ax.errorbar([r["phi"] for r in sel], [r["u_over_uT"] for r in sel],
+                    yerr=[r["u_over_uT_error"] for r in sel], fmt=m, color=c, capsize=3,
+                    label=f"{shape}s (u_T = {sel[0]['u_T']:.4g} m/s, this code)")
+    ax.set_xlabel(r"solid fraction $\phi$")
+    ax.set_ylabel(r"$\langle u \rangle / u_T$ (zero-volume-flux frame)")
+    ax.set_xlim(0, 0.45)
+    ax.set_ylim(0, 1.05)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
+
+
+def per_shape_plot(rows, curves, path, x_key, y_key, xlabel, ylabel, scale, marks=None):
+    shapes = [s for s in ("sphere", "cube") if any(r["shape"] == s for r in rows)]
+    fig, axes = plt.subplots(len(shapes), 1, figsize=(5.5, 3.2 * len(shapes)), squeeze=False)
+    for ax, shape in zip(axes[:, 0], shapes):
+        for r in rows:
+            if r["shape"] != shape:
+                continue
+            cv = curves[(shape, r["phi_nominal"])]
+            ax.plot(cv[x_key] / scale(r), cv[y_key], "-", label=f"phi = {r['phi']:.3f}")
+        if marks and shape in marks:
+            ax.axvline(marks[shape], color="k", ls="--", lw=0.8)
+        ax.set_title(shape + "s", fontsize=9)
+        ax.set_xlabel(xlabel)
+        ax.set_ylabel(ylabel)
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
+
+
+def study_plots(rows, curves, out, reynolds, d, a):
+    paths = [os.path.join(out, n) for n in ("settling.png", "rdf.png", "correlation.png",
+                                            "vacf.png")]
+    settling_plot(rows, reynolds, paths[0])
+    per_shape_plot(rows, curves, paths[1], "r", "g", r"$r / d$", r"$g(r)$", lambda r: d,
+                   marks={"cube": a / d})
+    per_shape_plot(rows, curves, paths[2], "rc", "C", r"$r / L$", r"$C(r)$ of $\delta v_z$",
+                   lambda r: r["box_cells"] * d / r["cells_per_diameter"])
+    per_shape_plot(rows, curves, paths[3], "lag", "vacf", r"$t\,u_T / d$",
+                   r"VACF of $v_{xy}$", lambda r: d / r["u_T"])
+    return paths

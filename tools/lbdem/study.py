@@ -1,0 +1,296 @@
+"""The hindered-settling study (docs/study.md): for a list of solid fractions and shapes, one
+packing, one single-body run per shape (its terminal velocity u_T at the same resolution and tau),
+one triply periodic run per (shape, phi), the analysis of each and the summary table and plots.
+
+Resumable: a run whose folder holds result.json for the same scene is skipped; a folder without
+it (an interrupted run) is emptied and the run starts again from t = 0.
+"""
+import json
+import math
+import os
+import shutil
+import time
+
+import numpy as np
+import yaml
+
+from . import analysis, io, packing, references, run
+
+RUN_FILES = ("scene.yaml", "bodies.csv")
+
+
+def load_study(path):
+    with open(path) as f:
+        s = yaml.safe_load(f)
+    s["_file"] = os.path.abspath(path)
+    return s
+
+
+def merged(base, extra):
+    """Deep merge of mappings (extra wins)."""
+    out = dict(base)
+    for k, v in (extra or {}).items():
+        out[k] = merged(out[k], v) if isinstance(v, dict) and isinstance(out.get(k), dict) else v
+    return out
+
+
+class Study:
+    def __init__(self, config, build, out=None, log=print):
+        self.c, self.build, self.log = config, build, log
+        base = os.path.dirname(config["_file"])
+        self.out = os.path.abspath(out or os.path.join(base, config.get("output", ".")))
+        p, f = config["particle"], config["fluid"]
+        self.d, self.rho_p = float(p["diameter"]), float(p["density"])
+        self.a = packing.CUBE_PER_SPHERE * self.d
+        self.nu, self.rho_f = float(f["viscosity"]), float(f.get("density", 1000.0))
+        self.tau = float(f["tau"])
+        self.dx = self.d / float(f["cells_per_diameter"])
+        # Lattice viscosity (tau - 1/2) / 3 in units dx^2 / dt.
+        self.dt = (self.tau - 0.5) / 3.0 * self.dx**2 / self.nu
+        self.clump = os.path.normpath(os.path.join(base, config["cube_clump"]))
+        self.finished = []  # (steps, cells, wall s) of the runs of this call
+
+    def estimate(self, steps, cells):
+        """Wall seconds of a run, from the runs finished in this call: wall = steps (c0 + c1 cells)
+        fitted by least squares (a per-step cost of the bodies and the coupling plus a cost per
+        cell update); 2e6 cell updates per second before any run has finished."""
+        if not self.finished:
+            return steps * cells / 2.0e6
+        a = np.array([[s, s * c] for s, c, _ in self.finished], float)
+        w = np.array([t for _, _, t in self.finished], float)
+        coef = np.linalg.lstsq(a, w, rcond=None)[0] if len(w) > 1 else np.array([-1.0, 0.0])
+        if np.any(coef < 0):  # one run, or a fit without meaning: cost per cell update alone
+            coef = np.array([0.0, w.sum() / a[:, 1].sum()])
+        return steps * (coef[0] + coef[1] * cells)
+
+    # ---- scenes -------------------------------------------------------------------------------
+    def shape_entry(self, shape):
+        if shape == "sphere":
+            return {"name": "sphere", "kind": "sphere", "diameter": self.d}
+        return {"name": "cube", "kind": "cube", "edge": self.a,
+                "clump": {"file": self.clump, "scale": self.a}}
+
+    def base_scene(self, name, domain, end):
+        r = self.c["run"]
+        scene = {
+            "name": name,
+            "time": {"end": end, "progress_interval": 30},
+            "fluid": {"domain": domain, "dx": self.dx, "viscosity": self.nu, "density": self.rho_f,
+                      "tau": self.tau, "characteristic_velocity": 0.05,
+                      "characteristic_length": self.d,
+                      "output": {"directory": ".", "series": {"interval": r["output_interval"]},
+                                 "fields": {"interval": end, "velocity": True}}},
+            "dem": {"gravity": [0, 0, -9.81], "dt_fraction": 0.05,
+                    "material": {"young_modulus": 5.0e4, "poisson_ratio": 0.3, "restitution": 0.9,
+                                 "friction": 0.6},
+                    "output": {"directory": "."}},
+            "coupling": {"output_interval": r["output_interval"]},
+        }
+        return merged(scene, self.c.get("scene_overrides"))
+
+    def single_scene(self, shape):
+        sc = self.c["single"]
+        cells = [int(round(k * self.d / self.dx)) for k in sc["box"]]
+        domain = [n * self.dx for n in cells]
+        s = self.base_scene(f"single_{shape}", domain, float(sc["end"]))
+        s["fluid"]["boundaries"] = {"x_min": "periodic", "x_max": "periodic", "y_min": "periodic",
+                                    "y_max": "periodic", "z_min": "wall", "z_max": "wall"}
+        s["dem"].update({"periodic": "xy", "walls": [{"axis": "z", "side": "lo"},
+                                                     {"axis": "z", "side": "hi"}]})
+        s["shapes"] = [self.shape_entry(shape)]
+        z = domain[2] - float(sc["release_below_top"]) * self.d
+        s["bodies"] = [{"shape": shape, "position": [domain[0] / 2, domain[1] / 2, z],
+                        "density": self.rho_p}]
+        return s, cells
+
+    def suspension_scene(self, shape, phi, base_packing):
+        # The box is a whole number of cells at the study's dx: the phi = 0.4 packing is scaled to
+        # the box of round(L / dx) cells (one more if that would compress it beyond 0.4), so the
+        # measured phi is within about 1.5 / (L / dx) x 3 of the nominal one.
+        n = max(1, round(base_packing.scaled(phi).box / self.dx))
+        while n * self.dx < base_packing.box:
+            n += 1
+        box = n * self.dx
+        p = base_packing.scaled(base_packing.n * math.pi / 6 * self.d**3 / box**3)
+        s = self.base_scene(f"{shape}_phi{phi:.3f}", [box] * 3, float(self.c["run"]["end"]))
+        s["dem"]["periodic"] = "xyz"
+        s["shapes"] = [self.shape_entry(shape)]
+        s["bodies"] = [{"file": "bodies.csv", "shape": shape, "density": self.rho_p}]
+        return s, [n] * 3, p
+
+    # ---- runs ---------------------------------------------------------------------------------
+    def packing(self):
+        cfg = self.c["packing"]
+        path = os.path.join(self.out, "packing_phi0.40.csv")
+        n = int(self.c["bodies"])
+        if os.path.exists(path):
+            x, q = io.read_bodies_csv(path)
+            if len(x) == n:
+                p = packing.Packing(n, packing.PHI_START, self.d)
+                p.x, p.q = x, q
+                self.log(f"study: packing of {n} bodies reused from {path}")
+                return p
+        t0 = time.monotonic()
+        p = packing.make_packing(n, int(cfg["sweeps"]), int(cfg["seed"]), self.d, self.log)
+        spheres, cubes = p.overlaps()
+        if spheres or cubes:
+            raise RuntimeError(f"packing: {spheres} sphere and {cubes} cube overlaps")
+        os.makedirs(self.out, exist_ok=True)
+        p.save(path, packing.PHI_START)
+        self.log(f"study: packing of {n} bodies at phi 0.4 in {time.monotonic() - t0:.0f} s, "
+                 f"lattice order {p.order_parameter():.3f} (random: ~{1 / math.sqrt(n):.2f}), "
+                 f"no overlaps; {path}")
+        return p
+
+    def launch(self, name, scene, cells, bodies=None, index=0, total=1, remaining=0.0):
+        """Runs one scene in <out>/<name>/ unless its result is there; returns the result dict."""
+        folder = os.path.join(self.out, name)
+        text = yaml.safe_dump(scene, sort_keys=False)
+        result_file = os.path.join(folder, "result.json")
+        if os.path.exists(result_file):
+            with open(os.path.join(folder, "scene.yaml")) as f:
+                if f.read() == text:
+                    with open(result_file) as g:
+                        res = json.load(g)
+                    self.log(f"study: [{index}/{total}] {name}: done earlier "
+                             f"({res['wall_s']:.0f} s), skipped")
+                    return res
+            self.log(f"study: [{index}/{total}] {name}: the scene changed, running it again")
+        elif os.path.isdir(folder):
+            self.log(f"study: [{index}/{total}] {name}: unfinished earlier, restarting from t = 0")
+        if os.path.isdir(folder):
+            shutil.rmtree(folder)
+        os.makedirs(folder)
+        if bodies is not None:
+            bodies.save(os.path.join(folder, "bodies.csv"), packing.PHI_START)
+        path = os.path.join(folder, "scene.yaml")
+        with open(path, "w") as f:
+            f.write(text)
+        steps = round(scene["time"]["end"] / self.dt)
+        work = float(np.prod(cells)) * steps
+        est = self.estimate(steps, float(np.prod(cells)))
+        ranks = self.c["run"].get("ranks", [1, 1])
+        self.log(f"study: [{index}/{total}] {name}: {cells[0]}x{cells[1]}x{cells[2]} cells, "
+                 f"{steps} steps; estimated {est:.0f} s for this run, {est + remaining:.0f} s to "
+                 f"the end of the study; {' '.join(run.coupled_command(self.build, path, *ranks))}")
+        wall, _ = run.run(self.build, path, ranks[0], ranks[1], timeout=None,
+                          log=os.path.join(folder, "run.log"))
+        res = {"name": name, "wall_s": wall, "cells": cells, "steps": steps,
+               "cell_updates_per_s": work / wall, "ranks": ranks}
+        self.finished.append((steps, float(np.prod(cells)), wall))
+        with open(result_file, "w") as f:
+            json.dump(res, f, indent=1)
+        self.log(f"study: [{index}/{total}] {name}: finished in {wall:.0f} s "
+                 f"({work / wall / 1e6:.2f} M cell updates/s)")
+        return res
+
+    def terminal_velocity(self, shape, result):
+        scene = os.path.join(self.out, result["name"], "scene.yaml")
+        tr = io.Trace(io.trace_path(scene))
+        speed = -tr["vz"][:, 0]
+        tail = speed[tr.time >= 0.8 * tr.time[-1]]
+        return float(tail.mean()), float((tail[-1] - tail[0]) / tail.mean())
+
+    def analyse(self, shape, phi, result, u_t):
+        scene_path = os.path.join(self.out, result["name"], "scene.yaml")
+        scene = io.load_scene(scene_path)
+        box = np.array(scene["fluid"]["domain"], float)
+        tr = io.Trace(io.trace_path(scene_path, scene))
+        series = io.read_series(io.series_path(scene_path, scene))
+        n = len(tr.id)
+        phi_m = n * math.pi / 6 * self.d**3 / np.prod(box)
+        j = np.interp(tr.time, series["time_s"], series["mean_uz_m_s"])
+        speed = -analysis.settling_velocity(tr["vz"].mean(axis=1), j)
+        start = analysis.mser_start(speed)
+        mean, err = analysis.block_average(speed[start:])
+        steady = slice(max(start, len(tr.time) - 100), None)  # the paper: the last 100 snapshots
+        x, v = tr.vectors("")[steady], tr.vectors("v")[steady]
+        r, g = analysis.radial_distribution(x, box, bins=int(self.c.get("rdf_bins", 40)))
+        rc, c = analysis.velocity_correlation(x, v[..., 2], box,
+                                              bins=int(self.c.get("correlation_bins", 10)))
+        vacf = analysis.vacf(v[..., :2])
+        dt_out = float(np.median(np.diff(tr.time)))
+        out = {"shape": shape, "phi_nominal": phi, "phi": phi_m, "bodies": n,
+               "box_cells": result["cells"][0], "cells_per_diameter": self.d / self.dx,
+               "tau": self.tau, "u_T": u_t, "settling_velocity": mean, "error": err,
+               "u_over_uT": mean / u_t, "u_over_uT_error": err / u_t,
+               "richardson_zaki": references.richardson_zaki(phi_m, self.c["reynolds"]),
+               # Batchelor's dilute limit only where it is meant to hold.
+               "batchelor": references.batchelor(phi_m) if phi_m <= 0.1 else None,
+               "t_steady": float(tr.time[start]),
+               "t_end": float(tr.time[-1]), "snapshots_analysed": int(len(x)),
+               "wall_s": result["wall_s"]}
+        curves = {"time": tr.time, "speed": speed, "r": r, "g": g, "rc": rc, "C": c,
+                  "lag": dt_out * np.arange(len(vacf)), "vacf": vacf}
+        if shape == "cube":
+            q = tr.quaternions()[steady]
+            cos = analysis.axes_against_gravity(q)
+            angles = analysis.contact_face_angles(x, q, box, self.a, 0.05 * self.a)
+            out["mean_abs_cos_axis_gravity"] = float(cos.mean())
+            out["max_abs_cos_axis_gravity"] = float(cos.max(axis=-1).mean())
+            out["touching_pairs"] = int(len(angles))
+            out["face_parallel_fraction"] = (float(np.mean(angles < 5.0)) if len(angles)
+                                             else float("nan"))
+            curves["cos"], curves["face_angles"] = cos.ravel(), angles
+        np.savez(os.path.join(self.out, result["name"], "analysis.npz"), **curves)
+        with open(os.path.join(self.out, result["name"], "analysis.json"), "w") as f:
+            json.dump(out, f, indent=1)
+        return out, curves
+
+    def execute(self, shapes=None, phis=None, render=True):
+        shapes = shapes or self.c["shapes"]
+        phis = phis or [float(v) for v in self.c["solid_fractions"]]
+        os.makedirs(self.out, exist_ok=True)
+        base = self.packing()
+        jobs = [("single", s, None) for s in shapes] + [("suspension", s, phi) for s in shapes
+                                                        for phi in phis]
+        scenes = []
+        for kind, shape, phi in jobs:
+            if kind == "single":
+                sc, cells = self.single_scene(shape)
+                scenes.append((f"single_{shape}", sc, cells, None))
+            else:
+                sc, cells, p = self.suspension_scene(shape, phi, base)
+                scenes.append((sc["name"], sc, cells, p))
+        results = {}
+        for k, (name, sc, cells, p) in enumerate(scenes):
+            remaining = sum(self.estimate(round(s["time"]["end"] / self.dt), float(np.prod(c)))
+                            for _, s, c, _ in scenes[k + 1:])
+            results[name] = self.launch(name, sc, cells, p, k + 1, len(scenes), remaining)
+        rows, curves = [], {}
+        for shape in shapes:
+            u_t, drift = self.terminal_velocity(shape, results[f"single_{shape}"])
+            self.log(f"study: single {shape}: u_T = {u_t:.5g} m/s (change over the last 20 % of "
+                     f"the run {100 * drift:+.2f} %)")
+            for phi in phis:
+                name = f"{shape}_phi{phi:.3f}"
+                row, cv = self.analyse(shape, phi, results[name], u_t)
+                rows.append(row)
+                curves[(shape, phi)] = cv
+                self.log(f"study: {name}: phi {row['phi']:.4f}, u/u_T = {row['u_over_uT']:.4f} +- "
+                         f"{row['u_over_uT_error']:.4f} (Richardson-Zaki "
+                         f"{row['richardson_zaki']:.4f}, Batchelor {row['batchelor']}), steady "
+                         f"from {row['t_steady']:.3g} s")
+                if render:
+                    self.render(name)
+        self.write_summary(rows)
+        from . import plots
+        for png in plots.study_plots(rows, curves, self.out, self.c["reynolds"], self.d, self.a):
+            self.log(f"study: plot {png}")
+        return rows
+
+    def write_summary(self, rows):
+        path = os.path.join(self.out, "summary.csv")
+        keys = list(dict.fromkeys(k for r in rows for k in r))
+        with open(path, "w") as f:
+            f.write(",".join(keys) + "\n")
+            for r in rows:
+                f.write(",".join("" if r.get(k) is None else str(r.get(k)) for k in keys) + "\n")
+        self.log(f"study: summary {path}")
+
+    def render(self, name):
+        from . import bodymesh
+        scene = os.path.join(self.out, name, "scene.yaml")
+        xdmf = bodymesh.write_surfaces(scene)
+        png = bodymesh.render_png(scene, xdmf)
+        self.log(f"study: {name}: body surfaces {xdmf}" + (f", picture {png}" if png else ""))

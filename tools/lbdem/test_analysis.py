@@ -1,0 +1,164 @@
+"""Each analysis function on synthetic data with a known answer (ctest tools_lbdem_py)."""
+import unittest
+
+import numpy as np
+
+from lbdem import analysis, geometry
+
+
+class SteadyStateAndErrorBar(unittest.TestCase):
+    def test_mser_skips_the_transient(self):
+        # Relaxation u(t) = -1 + exp(-t / 20) plus noise: the transient is gone (to the noise,
+        # 0.01) after ~20 ln(100) = 92 samples; MSER must cut between 40 and 200 samples.
+        rng = np.random.default_rng(1)
+        t = np.arange(2000)
+        x = -1 + np.exp(-t / 20.0) + 0.01 * rng.standard_normal(len(t))
+        d = analysis.mser_start(x)
+        self.assertGreater(d, 40)
+        self.assertLess(d, 200)
+        self.assertAlmostEqual(x[d:].mean(), -1.0, delta=0.002)
+
+    def test_mser_keeps_a_stationary_series(self):
+        rng = np.random.default_rng(2)
+        self.assertLess(analysis.mser_start(rng.standard_normal(1000)), 500)
+
+    def test_block_average_of_an_ar1_series(self):
+        # AR(1) x_k = rho x_{k-1} + e_k: the standard error of the mean of n samples is
+        # sigma_x / sqrt(n) * sqrt((1 + rho) / (1 - rho)) for n >> correlation time.
+        rng = np.random.default_rng(3)
+        rho, n = 0.9, 2**16
+        e = rng.standard_normal(n)
+        x = np.empty(n)
+        x[0] = e[0] / np.sqrt(1 - rho**2)
+        for k in range(1, n):
+            x[k] = rho * x[k - 1] + e[k]
+        sigma = 1 / np.sqrt(1 - rho**2)
+        exact = sigma / np.sqrt(n) * np.sqrt((1 + rho) / (1 - rho))
+        mean, err = analysis.block_average(x)
+        self.assertAlmostEqual(err / exact, 1.0, delta=0.3)
+        naive = x.std() / np.sqrt(n)
+        self.assertGreater(err, 3 * naive)  # the naive error bar is sqrt(19) = 4.4 too small
+
+
+class ZeroVolumeFluxFrame(unittest.TestCase):
+    def test_settling_and_slip_velocity(self):
+        # phi = 0.3, bodies at -0.02 m/s, fluid at +0.003 m/s: j = 0.3 (-0.02) + 0.7 (0.003)
+        # = -0.0039 (what the fluid series reports as mean_uz); V = u_p - j = -0.0161 and the slip
+        # u_p - u_f = -0.023 = V / (1 - phi).
+        phi, up, uf = 0.3, -0.02, 0.003
+        j = phi * up + (1 - phi) * uf
+        v = analysis.settling_velocity(up, j)
+        self.assertAlmostEqual(float(v), -0.0161, places=12)
+        self.assertAlmostEqual(float(analysis.slip_velocity(v, phi)), up - uf, places=12)
+
+
+class Structure(unittest.TestCase):
+    box = np.array([1.0, 1.0, 1.0])
+
+    def test_ideal_gas_has_g_equal_one(self):
+        rng = np.random.default_rng(4)
+        x = rng.random((20, 400, 3))
+        r, g = analysis.radial_distribution(x, self.box, bins=10)
+        # 20 x 79800 pairs; the smallest shell (r < 0.05) still holds ~420 pairs: 5 % noise.
+        np.testing.assert_allclose(g, 1.0, atol=0.15)
+        self.assertAlmostEqual(g[3:].mean(), 1.0, delta=0.02)
+
+    def test_simple_cubic_lattice_peaks_at_the_spacing(self):
+        n, a = 5, 0.2
+        x = np.stack(np.meshgrid(*[np.arange(n) * a] * 3, indexing="ij"), -1).reshape(-1, 3)
+        r, g = analysis.radial_distribution(x, self.box, r_max=0.5, bins=48)  # a inside a bin
+        first = np.nonzero(g)[0][0]  # minimum image: no pair closer than a, 6 neighbours at a
+        self.assertAlmostEqual(r[first], a, delta=0.01)
+        w = 0.5 / 48
+        shell = 4 / 3 * np.pi * ((r[first] + w / 2) ** 3 - (r[first] - w / 2) ** 3)
+        self.assertAlmostEqual(g[first], 6 * 0.5 * n**3 / (0.5 * n**3 * (n**3 - 1) * shell), 6)
+
+    def test_velocity_correlation_of_a_plane_wave(self):
+        # v_z = cos(k x) at uniformly random points: <cos(k x_i) cos(k x_j)> over pairs at
+        # distance r in random directions is sin(kr) / (2 kr), <v^2> = 1/2: C(r) = sin(kr) / (kr).
+        rng = np.random.default_rng(5)
+        k = 2 * np.pi
+        x = rng.random((20, 300, 3))
+        vz = np.cos(k * x[..., 0])
+        r, c = analysis.velocity_correlation(x, vz, self.box, bins=10)
+        np.testing.assert_allclose(c, np.sin(k * r) / (k * r), atol=0.06)
+
+    def test_velocity_correlation_of_independent_velocities_is_zero(self):
+        rng = np.random.default_rng(6)
+        x = rng.random((20, 300, 3))
+        r, c = analysis.velocity_correlation(x, rng.standard_normal((20, 300)), self.box, bins=10)
+        np.testing.assert_allclose(c, 0.0, atol=0.05)
+
+
+class Autocorrelation(unittest.TestCase):
+    def test_ornstein_uhlenbeck_decays_exponentially(self):
+        # Exact OU update with rate gamma: v_{k+1} = v_k a + sqrt(1 - a^2) xi, a = e^{-gamma dt};
+        # C(t) = exp(-gamma t).
+        rng = np.random.default_rng(7)
+        steps, bodies, a = 4000, 50, np.exp(-0.1)
+        v = np.empty((steps, bodies, 2))
+        v[0] = rng.standard_normal((bodies, 2))
+        for k in range(1, steps):
+            v[k] = a * v[k - 1] + np.sqrt(1 - a * a) * rng.standard_normal((bodies, 2))
+        c = analysis.vacf(v, max_lag=30, subtract_mean=False)
+        np.testing.assert_allclose(c, a ** np.arange(31), atol=0.02)
+        # Removing the body mean (1/N of the variance) changes C by O(1/N) only.
+        np.testing.assert_allclose(analysis.vacf(v, max_lag=30), c, atol=0.03)
+
+
+class Orientation(unittest.TestCase):
+    def test_random_rotations_give_uniform_cosines(self):
+        q = geometry.random_quaternions(np.random.default_rng(8), 20000)
+        c = analysis.axes_against_gravity(q)
+        self.assertAlmostEqual(c.mean(), 0.5, delta=0.01)
+        hist = np.histogram(c, bins=5, range=(0, 1))[0] / c.size
+        np.testing.assert_allclose(hist, 0.2, atol=0.01)
+
+    def test_face_down_cube(self):
+        c = analysis.axes_against_gravity(np.array([1.0, 0, 0, 0]))
+        np.testing.assert_allclose(c, [0, 0, 1])
+
+    def test_face_angles_of_touching_cubes(self):
+        box = np.array([10.0, 10.0, 10.0])
+        x = np.array([[1.0, 1.0, 1.0], [2.0, 1.0, 1.0], [5.0, 5.0, 5.0]])
+        # Two aligned cubes face to face (gap 0) and a far one: one pair, angle 0.
+        q = np.array([[1.0, 0, 0, 0]] * 3)
+        np.testing.assert_allclose(analysis.contact_face_angles(x, q, box, 1.0, 0.01), [0.0],
+                                   atol=1e-6)
+        # Turn the second one by 30 degrees about z and move it so its edge touches: the most
+        # nearly parallel faces are the z faces (angle 0); about a tilted axis no pair is parallel.
+        h = np.radians(30) / 2
+        q[1] = [np.cos(h), 0, 0, np.sin(h)]
+        x[1, 0] = 1.0 + 0.5 + 0.5 * (np.cos(np.radians(30)) + np.sin(np.radians(30)))
+        np.testing.assert_allclose(analysis.contact_face_angles(x, q, box, 1.0, 0.01), [0.0],
+                                   atol=1e-6)
+        axis = np.array([1.0, 1.0, 1.0]) / np.sqrt(3)
+        h = np.radians(20) / 2
+        q[1] = np.concatenate([[np.cos(h)], np.sin(h) * axis])
+        x[1, 0] = 2.2  # near the first cube; counted as touching with gap = their separation
+        sep = geometry.box_separation(x[1] - x[0], geometry.rotation_matrices(q[0])[None],
+                                      geometry.rotation_matrices(q[1])[None], np.full(3, 0.5),
+                                      np.full(3, 0.5))
+        angles = analysis.contact_face_angles(x, q, box, 1.0, sep[0] + 1e-9)
+        self.assertEqual(len(angles), 1)
+        self.assertGreater(angles[0], 5.0)
+
+
+class BoxSeparation(unittest.TestCase):
+    def test_axis_aligned_and_rotated(self):
+        eye = np.eye(3)[None]
+        half = np.full(3, 0.5)
+        # Aligned unit cubes 1.25 apart along x: gap 0.25 exactly.
+        self.assertAlmostEqual(
+            float(geometry.box_separation(np.array([[1.25, 0, 0]]), eye, eye, half, half)[0]),
+            0.25)
+        # One turned 45 degrees about z reaches sqrt(2)/2 along x: touching at 0.5 + 0.7071.
+        h = np.pi / 8
+        r = geometry.rotation_matrices(np.array([np.cos(h), 0, 0, np.sin(h)]))[None]
+        for dx, overlap in [(1.2, True), (1.22, False)]:
+            gap = geometry.box_separation(np.array([[dx, 0, 0]]), eye, r, half, half)[0]
+            self.assertEqual(gap <= 0, overlap, dx)
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,62 @@
+"""Body surface meshes: shapes placed at the body poses, one triangle mesh per output time
+(ctest tools_lbdem_py)."""
+import os
+import tempfile
+import unittest
+import xml.etree.ElementTree as ET
+
+import h5py
+import numpy as np
+import yaml
+
+from lbdem import bodymesh
+
+HEADER = "time,id,x,y,z,vx,vy,vz,wx,wy,wz,qw,qx,qy,qz,fx,fy,fz,tx,ty,tz\n"
+
+
+class BodyMesh(unittest.TestCase):
+    def test_meshes_are_closed_and_sized(self):
+        v, f = bodymesh.icosphere()
+        self.assertEqual(len(f), 320)
+        np.testing.assert_allclose(np.linalg.norm(v, axis=1), 1.0)
+        for verts, tris in (bodymesh.icosphere(), bodymesh.box_mesh([1, 2, 3])):
+            # Closed, consistently oriented: every edge is used once in each direction, and
+            # the divergence theorem gives the enclosed volume.
+            edges = {(a, b) for t in tris for a, b in ((t[0], t[1]), (t[1], t[2]), (t[2], t[0]))}
+            self.assertTrue(all((b, a) in edges for a, b in edges))
+        v, f = bodymesh.box_mesh([1, 2, 3])
+        vol = np.sum(np.einsum("ij,ij->i", v[f[:, 0]], np.cross(v[f[:, 1]], v[f[:, 2]]))) / 6
+        self.assertAlmostEqual(vol, 6.0)
+
+    def test_surfaces_follow_the_trace(self):
+        with tempfile.TemporaryDirectory() as d:
+            scene = {"name": "s", "fluid": {"domain": [1, 1, 1], "output": {"directory": "."}},
+                     "dem": {"output": {"directory": "."}},
+                     "shapes": [{"name": "c", "kind": "cube", "edge": 0.1}],
+                     "bodies": [{"file": "b.csv", "shape": "c", "density": 2}]}
+            path = os.path.join(d, "s.yaml")
+            with open(path, "w") as f:
+                yaml.safe_dump(scene, f)
+            h = np.radians(45) / 2  # second cube turned 45 degrees about z
+            with open(os.path.join(d, "s_bodies.csv"), "w") as f:
+                f.write(HEADER)
+                for t in (0.0, 0.5):
+                    f.write(f"{t},0,0.2,0.2,{0.5 - t},0,0,-1,0,0,0,1,0,0,0,0,0,0,0,0,0\n")
+                    f.write(f"{t},1,0.6,0.6,0.5,0,0,-2,0,0,0,{np.cos(h)},0,0,{np.sin(h)},"
+                            "0,0,0,0,0,0\n")
+            xdmf = bodymesh.write_surfaces(path)
+            grids = ET.parse(xdmf).getroot().findall(".//Grid[@GridType='Uniform']")
+            self.assertEqual(len(grids), 2)
+            with h5py.File(os.path.join(d, "s_surfaces.h5")) as h5:
+                self.assertEqual(h5["triangles"].shape, (24, 3))
+                p = h5["t000001/points"][()]
+                np.testing.assert_allclose(p[:8].mean(axis=0), [0.2, 0.2, 0.0], atol=1e-15)
+                np.testing.assert_allclose(np.linalg.norm(p[:8] - [0.2, 0.2, 0.0], axis=1),
+                                           np.sqrt(3) * 0.05)
+                # The turned cube reaches 0.05 sqrt(2) along x.
+                self.assertAlmostEqual(p[8:, 0].max() - 0.6, 0.05 * np.sqrt(2))
+                np.testing.assert_array_equal(h5["t000001/vz"][()], [-1.0] * 8 + [-2.0] * 8)
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,50 @@
+"""The sweep driver's bookkeeping: finished runs are skipped, interrupted ones restart cleanly,
+a changed scene runs again; the cost estimate (ctest tools_lbdem_py)."""
+import os
+import tempfile
+import unittest
+from unittest import mock
+
+from lbdem import study
+
+CONFIG = {"particle": {"diameter": 3.5e-4, "density": 2500},
+          "fluid": {"viscosity": 1e-6, "cells_per_diameter": 6, "tau": 0.55},
+          "cube_clump": "c.clump", "run": {"end": 0.01, "output_interval": 1e-3}}
+
+
+class Sweep(unittest.TestCase):
+    def test_skip_restart_and_rerun(self):
+        with tempfile.TemporaryDirectory() as d:
+            s = study.Study(dict(CONFIG, _file=os.path.join(d, "s.yaml")), "build", out=d,
+                            log=lambda _: None)
+            scene, cells = s.base_scene("a", [1e-3] * 3, 0.01), [10, 10, 10]
+            calls = []
+
+            def fake_run(build, path, *args, **kw):
+                calls.append(path)
+                return 2.0, ""
+            with mock.patch.object(study.run, "run", fake_run):
+                s.launch("a", scene, cells)
+                self.assertEqual(len(calls), 1)
+                s.launch("a", scene, cells)  # finished: skipped
+                self.assertEqual(len(calls), 1)
+                os.remove(os.path.join(d, "a", "result.json"))  # as if interrupted
+                stale = os.path.join(d, "a", "a_bodies.csv")
+                open(stale, "w").close()
+                s.launch("a", scene, cells)
+                self.assertEqual(len(calls), 2)
+                self.assertFalse(os.path.exists(stale))  # restarted from an empty folder
+                scene["time"]["end"] = 0.02  # changed scene: runs again
+                s.launch("a", scene, cells)
+                self.assertEqual(len(calls), 3)
+
+    def test_estimate_fits_per_step_and_per_cell_cost(self):
+        s = study.Study(dict(CONFIG, _file="/x/s.yaml"), "build", out="/x", log=lambda _: None)
+        self.assertEqual(s.estimate(100, 2e6), 100.0)  # 2e6 cell updates/s before any run
+        # wall = steps (0.01 + 1e-7 cells), exactly: the fit recovers it.
+        s.finished = [(n, c, n * (0.01 + 1e-7 * c)) for n, c in [(100, 1e4), (200, 1e5)]]
+        self.assertAlmostEqual(s.estimate(300, 5e5), 300 * (0.01 + 0.05), places=9)
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,74 @@
+#!/usr/bin/python3
+"""Runs the hindered-settling study of a study file (configs/study/*.yaml; docs/study.md):
+packing, single-body runs (u_T), one run per shape and solid fraction, analysis, summary.csv and
+the plots settling.png, rdf.png, correlation.png, vacf.png. Resumable: run it again after an
+interruption and finished runs are skipped.
+
+    /usr/bin/python3 tools/study.py configs/study/small.yaml [--build build] [--out DIR]
+        [--shapes cube] [--phi 0.1 0.3] [--no-render] [--plan]
+"""
+import argparse
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from lbdem import study  # noqa: E402
+
+
+def plan(s, shapes, phis, rate, body_cost):
+    """Cells, steps and estimated wall time of every run: per coupled step, the lattice
+    (cells / (fluid ranks x rate)) plus porosity and momentum exchange (bodies / fluid ranks x
+    body_cost, scaled from 6 to the study's cells per diameter as the band, i.e. the surface:
+    (cells per d / 6)^2). Perfect scaling over the fluid ranks is assumed: a lower bound."""
+    n = int(s.c["bodies"])
+    vol = n * math.pi / 6 * s.d**3
+    ranks = s.c["run"].get("ranks", [1, 1])[0]
+    per_body = body_cost * (s.d / s.dx / 6.0) ** 2
+    total = 0.0
+    print(f"{'run':<22}{'cells':>16}{'steps':>9}{'bodies':>8}{'s/step':>9}{'hours':>9}")
+    rows = [(f"single_{sh}", [round(k * s.d / s.dx) for k in s.c["single"]["box"]],
+             float(s.c["single"]["end"]), 1) for sh in shapes]
+    rows += [(f"{sh}_phi{phi:.3f}", [max(round((vol / phi) ** (1 / 3) / s.dx),
+                                          math.ceil((vol / 0.4) ** (1 / 3) / s.dx - 1e-9))] * 3,
+              float(s.c["run"]["end"]), n) for sh in shapes for phi in phis]
+    for name, cells, end, bodies in rows:
+        steps = round(end / s.dt)
+        per_step = (cells[0] * cells[1] * cells[2] / rate + bodies * per_body) / ranks
+        total += steps * per_step
+        print(f"{name:<22}{'x'.join(map(str, cells)):>16}{steps:>9}{bodies:>8}{per_step:>9.3g}"
+              f"{steps * per_step / 3600:>9.2f}")
+    print(f"total {total / 3600:.2f} h on {ranks} fluid rank(s) at {rate / 1e6:.3g} M lattice cell "
+          f"updates/s per rank and {1e3 * per_body:.3g} ms per body and step (dx = {s.dx:.4g} m, "
+          f"dt = {s.dt:.4g} s)")
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
+    p.add_argument("study")
+    p.add_argument("--build", default=os.path.join(os.path.dirname(__file__), "..", "build"))
+    p.add_argument("--out", help="output folder (default: the study file's 'output')")
+    p.add_argument("--shapes", nargs="+", choices=["sphere", "cube"])
+    p.add_argument("--phi", nargs="+", type=float, help="solid fractions (default: the file's)")
+    p.add_argument("--no-render", action="store_true", help="no body surfaces and pictures")
+    p.add_argument("--plan", action="store_true",
+                   help="print cells, steps and estimated hours of every run; run nothing")
+    p.add_argument("--rate", type=float, default=9.0e6,
+                   help="--plan: lattice cell updates per second and fluid rank (docs/study.md)")
+    p.add_argument("--body-cost", type=float, default=2.2e-4,
+                   help="--plan: porosity + momentum exchange seconds per body and step at 6 "
+                        "cells per diameter (docs/study.md)")
+    args = p.parse_args()
+    s = study.Study(study.load_study(args.study), args.build, args.out)
+    shapes = args.shapes or s.c["shapes"]
+    phis = args.phi or [float(v) for v in s.c["solid_fractions"]]
+    if args.plan:
+        plan(s, shapes, phis, args.rate, args.body_cost)
+        return 0
+    render = not args.no_render and s.c.get("render", True)
+    s.execute(shapes, phis, render)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
