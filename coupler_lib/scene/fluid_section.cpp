@@ -102,7 +102,7 @@ FluidParams parse_fluid(Section& s) {
     p.control.enabled = true;
     p.control.target = c->vec3("target", {0, 0, 0}, "mean fluid velocity to hold, m/s");
     p.control.gain =
-        c->get<double>("gain", 0.5, "proportional gain per update", Bounds{0.0, 1.0, true, false});
+        c->get<double>("gain", 0.5, "proportional gain per update", Bounds::closed(0.0, 1.0));
     p.control.integral_gain =
         c->get<double>("integral_gain", 0.05, "integral gain per update", Bounds::closed(0.0, 0.5));
     p.control.interval =
