@@ -30,9 +30,9 @@ class MomentumAudit {
   MomentumAudit(const std::string& path, const Scene& scene, const std::vector<Shape>& shapes,
                 std::array<double, 3> net_weight, MPI_Comm comm);
 
-  // Collective. `states`: the bodies this rank received after the step (each body is counted
-  // on the rank whose interior box holds its centre); `exchange`: the solver's porous field
-  // sums of the step just taken (their Q).
+  // Collective, after a step. `states`: the bodies this rank received after the step (each
+  // body is counted on the rank whose interior box holds its centre); the covered fluid Q is
+  // the solver's porous-field sums of the step just taken.
   template <class T>
   void write(std::int64_t step, double time, const FluidSolver<T>& solver,
              std::span<const BodyState> states);
