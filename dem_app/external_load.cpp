@@ -108,6 +108,20 @@ ExternalLoads::ExternalLoads(const std::vector<Shape>& shapes, const std::vector
   load_force_.assign(3 * nb, 0.0);
   load_torque_.assign(3 * nb, 0.0);
   extra_force_.assign(3 * nb, 0.0);
+  last_force_.assign(3 * nb, 0.0);
+  last_torque_.assign(3 * nb, 0.0);
+  kick_force_.assign(3 * nb, 0.0);
+  kick_torque_.assign(3 * nb, 0.0);
+}
+
+void ExternalLoads::begin_run(long substeps) {
+  kick_ = substeps >= 2;
+  for (std::size_t k = 0; k < load_force_.size(); ++k) {
+    kick_force_[k] = kick_ ? 0.5 * (load_force_[k] - last_force_[k]) : 0.0;
+    kick_torque_[k] = kick_ ? 0.5 * (load_torque_[k] - last_torque_[k]) : 0.0;
+  }
+  last_force_ = load_force_;
+  last_torque_ = load_torque_;
 }
 
 void ExternalLoads::set_load(std::int64_t body, const Eigen::Vector3d& force,

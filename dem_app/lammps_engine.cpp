@@ -200,6 +200,7 @@ void LammpsEngine::exchange_loads() {
 void LammpsEngine::run(long substeps) {
   if (setup_.external_loads) exchange_loads();
   if (substeps <= 0) return;
+  if (setup_.external_loads) loads_.begin_run(substeps);
   command("run " + std::to_string(substeps) + " pre no post no");
 }
 

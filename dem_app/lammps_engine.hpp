@@ -89,7 +89,7 @@ class LammpsEngine {
   ExternalLoads loads_;
   struct CallbackContext {
     void* lmp = nullptr;
-    const ExternalLoads* loads = nullptr;
+    ExternalLoads* loads = nullptr;
   } callback_;
   struct PendingLoad {
     std::int64_t id;

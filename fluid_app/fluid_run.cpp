@@ -34,9 +34,10 @@ void log_fluid_setup(const AppContext& ctx, const FluidParams& p) {
                   p.body_force[1] / a, p.body_force[2] / a);
   if (p.control.enabled)
     ctx.log->info(
-        "mean velocity control: target [{}, {}, {}] m/s, gain {}, integral gain {} (per step)",
+        "mean velocity control: target [{}, {}, {}] m/s, gain {}, integral gain {} (per update, "
+        "every {} steps)",
         p.control.target[0], p.control.target[1], p.control.target[2], p.control.gain,
-        p.control.integral_gain);
+        p.control.integral_gain, p.control.every);
 }
 
 template <class T>

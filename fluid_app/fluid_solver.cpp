@@ -90,6 +90,7 @@ class FluidSolverImpl {
       for (int i = 0; i < Q; ++i) f.data[i * stride + c] = T(0);
     for (int a = 0; a < 3; ++a) base_force[a] = p.body_force[a] / p.units.acceleration();
     force = base_force;
+    nodes = double(box.global[0]) * double(box.global[1]) * double(box.global[2]);
     split_core_shell();
   }
 
@@ -165,6 +166,8 @@ class FluidSolverImpl {
       a.d = porous_field.d.data();
       a.body = porous_field.body.data();
       for (int m = 0; m < 9; ++m) a.table[m] = table[m].data();
+      exchange.assign(std::size_t(kPenaltyTerms) * (porous_field.bodies.size() + 1), 0.0);
+      a.exchange = exchange.data();
       for (int k = 0; k < 3; ++k) {
         a.period[k] = dec.periodic(k) ? T(box.global[k]) : T(0);
         a.half_period[k] =
@@ -186,8 +189,10 @@ class FluidSolverImpl {
     halo.finish(f.data.get(), odd);
     bnd.apply(f.data.get(), odd);
     ++steps;
+    if (porous_field.active) store_exchange();
+    for (int k = 0; k < 3; ++k) impulse[k] += force[k] * double(nodes);
     if (sum) reduce_flow(sums);
-    if (params.control.enabled) control();
+    if (params.control.enabled && steps % params.control.every == 0) control();
   }
 
   // The body table as 9 flat arrays with a zero entry 0 (body -1); centres wrapped into
@@ -205,6 +210,21 @@ class FluidSolverImpl {
     }
   }
 
+  // The kernel's flat sums (entry 0: body -1) as one PenaltyExchange per body.
+  void store_exchange() {
+    auto& out = porous_field.exchange;
+    out.resize(porous_field.bodies.size());
+    for (std::size_t k = 0; k < out.size(); ++k) {
+      const double* e = exchange.data() + kPenaltyTerms * (k + 1);
+      for (int m = 0; m < 3; ++m) {
+        out[k].impulse[m] = e[m];
+        out[k].moment[m] = e[3 + m];
+        out[k].covered[m] = e[6 + m];
+        out[k].covered_moment[m] = e[9 + m];
+      }
+    }
+  }
+
   void reduce_flow(const FlowSums& s) {
     std::int64_t local[4] = {s.momentum[0], s.momentum[1], s.momentum[2], s.mass};
     std::int64_t global[4];
@@ -215,7 +235,8 @@ class FluidSolverImpl {
   }
 
   // PI control of the uniform force on the mean fluid velocity (hindered settling: the force
-  // that balances the bodies' weight so that the fluid as a whole stays at rest).
+  // that balances the bodies' weight so that the fluid as a whole stays at rest), every
+  // control.every steps on the mean of the last step; the force holds in between.
   void control() {
     const auto& c = params.control;
     for (int k = 0; k < 3; ++k) {
@@ -244,6 +265,9 @@ class FluidSolverImpl {
   std::vector<CellRange> shell;
   std::int64_t steps = 0;
   std::array<double, 3> base_force{}, feed_forward{}, force{}, integral{};
+  std::array<double, 3> impulse{};  // sum over steps of force * nodes
+  double nodes = 0;                 // lattice nodes of the whole domain
+  std::vector<double> exchange;     // kernel's per-body sums, kPenaltyTerms per entry
   bool measure = false;
   MeanFlow mean;
   PorousField<T> porous_field;
@@ -365,7 +389,35 @@ std::array<double, 3> FluidSolver<T>::uniform_force() const {
 
 template <class T>
 void FluidSolver<T>::set_feed_forward_force(std::array<double, 3> force) {
-  impl_->feed_forward = force;
+  auto& m = *impl_;
+  m.feed_forward = force;
+  // Effective at once, not only from the controller's first update.
+  for (int k = 0; k < 3; ++k)
+    m.force[k] = m.base_force[k] + force[k] + m.params.control.integral_gain * m.integral[k];
+}
+
+template <class T>
+std::array<double, 3> FluidSolver<T>::applied_impulse() const {
+  return impl_->impulse;
+}
+
+template <class T>
+std::array<double, 3> FluidSolver<T>::momentum() const {
+  using namespace d3q19;
+  const LocalBox& b = impl_->box;
+  std::array<double, 3> local{};
+  for (int z = 1; z <= b.n[2]; ++z)
+    for (int y = 1; y <= b.n[1]; ++y)
+      for (int x = 1; x <= b.n[0]; ++x) {
+        const CellIndex cell = b.index(x, y, z);
+        for (int i = 1; i < Q; ++i) {
+          const double v = double(impl_->population(i, cell));
+          for (int k = 0; k < 3; ++k) local[k] += c[i][k] * v;
+        }
+      }
+  std::array<double, 3> global{};
+  MPI_Allreduce(local.data(), global.data(), 3, MPI_DOUBLE, MPI_SUM, impl_->dec.comm());
+  return global;
 }
 
 template <class T>

@@ -71,10 +71,16 @@ class FluidSolver {
   // Uniform body force density F (lattice units; momentum added per cell and step is F).
   void set_uniform_force(std::array<double, 3> force);
   std::array<double, 3> uniform_force() const;
-  // With fluid.mean_velocity_control enabled, each step sets the force to
+  // With fluid.mean_velocity_control enabled, every control.every steps sets the force to
   //   feed_forward + rho0 [k_p e_n + k_i sum e_m],  e = target - u_mean,
   // (the controller hook). Feed-forward: e.g. the known net weight of the bodies per cell.
   void set_feed_forward_force(std::array<double, 3> force);
+  // Sum over the steps taken of the uniform force on all nodes of the domain, F * N (lattice
+  // units: the momentum the force gave the lattice), whatever set it (scene, feed-forward,
+  // controller). The momentum audit compares momentum changes with it.
+  std::array<double, 3> applied_impulse() const;
+  // Lattice momentum sum_i c_i f_i over all nodes (post-stream, the bare moment j; collective).
+  std::array<double, 3> momentum() const;
   // Mean flow measured during the last step (only maintained with the controller enabled or
   // after measure_mean_flow(true)).
   MeanFlow mean_flow() const;

@@ -30,12 +30,24 @@ struct PorousBody {
   std::array<T, 3> omega{};     // angular velocity, rad per time step
 };
 
+// What the penalization exchanged with the lattice in one step, summed over the interior
+// cells of this rank that a body owns (body index k), lattice units, about the body's centre
+// (docs/method-loads.md). With pen = rho (1 - d)(u_p - v) and u+ the shifted velocity:
+struct PenaltyExchange {
+  std::array<double, 3> impulse{};         // P = sum pen: momentum given to the lattice
+  std::array<double, 3> moment{};          // sum r x pen
+  std::array<double, 3> covered{};         // Q = sum (1 - d) rho u+: fluid the body covers
+  std::array<double, 3> covered_moment{};  // sum (1 - d) r x rho u+
+};
+
 template <class T>
 struct PorousField {
   bool active = false;
   std::vector<float> d;               // porosity per local cell (with ghosts)
   std::vector<std::int32_t> body;     // body index per local cell (with ghosts), -1 none
   std::vector<PorousBody<T>> bodies;  // per-step body table
+  // Written by the solver in every porous step: one entry per entry of `bodies`.
+  std::vector<PenaltyExchange> exchange;
 };
 
 }  // namespace lbdem

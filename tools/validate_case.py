@@ -13,6 +13,7 @@ that resolution; see README, "Validation").
     validate_case.py invariance --build build --scene S --ranks-list 1:1 3:2 --tolerance 1e-12
     validate_case.py rotation --build build --scene S --expect broadside --max-tilt-change 20
     validate_case.py spin     --build build --scene S --tolerance 0.1
+    validate_case.py momentum --build build --scene S --ranks 3:2 --tolerance 1e-9
 """
 import argparse
 import math
@@ -232,10 +233,47 @@ def cmd_rotation(args):
     return 0 if ok else 1
 
 
+def cmd_momentum(args):
+    """Momentum audit of a triply periodic run (fluid_app's <name>_momentum.csv)."""
+    fr, dr = (int(x) for x in args.ranks.split(":"))
+    wall, _ = coupled_case.run(args.build, args.scene, fr, dr)
+    _, trace = coupled_case.scene_info(args.scene)
+    path = trace[: -len("_bodies.csv")] + "_momentum.csv"
+    # From the first coupled step on: the DEM's set-up reports the bodies' starting velocity
+    # with half a substep of gravity but not of the buoyancy force (LAMMPS's rigid set-up), a
+    # one-time offset of W dt_DEM / 2 that the step-0 row would carry into every comparison.
+    rows = [r for r in coupled_case.read_series(path) if r["step"] >= 1]
+    axes = ("x", "y", "z")
+
+    def total(r, a):
+        return r[f"fluid_p{a}"] + r[f"bodies_p{a}"] - r[f"applied_p{a}"]
+
+    # Scale: the largest momentum the bodies carry (the fluid carries about the opposite).
+    scale = max(abs(r[f"bodies_p{a}"]) for r in rows for a in axes)
+    worst = max(abs(total(r, a) - total(rows[0], a)) for r in rows for a in axes)
+    applied = max(abs(r[f"applied_p{a}"]) for r in rows for a in axes)
+    steps = int(rows[-1]["step"])
+    error = worst / scale
+    print(f"momentum audit: {steps} steps, {len(rows)} rows; largest body momentum {scale:.4e} N s, "
+          f"largest applied impulse {applied:.4e} N s; largest change of fluid + bodies - applied "
+          f"{worst:.3e} N s = {error:.2e} of the body momentum; ranks {args.ranks}, wall time "
+          f"{wall:.1f} s")
+    s, _ = coupled_case.scene_info(args.scene)
+    append_row(case_name(args), "", s["fluid"]["tau"], "momentum imbalance / body momentum", 0,
+               f"{error:.3g}", f"{error:.3g}", wall, args.ranks)
+    if steps < args.min_steps:
+        print(f"FAILED: {steps} steps, the audit needs at least {args.min_steps}")
+        return 1
+    if error > args.tolerance:
+        print(f"FAILED: imbalance {error:.2e} above the tolerance {args.tolerance:.2e}")
+        return 1
+    return 0
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     sub = p.add_subparsers(dest="cmd", required=True)
-    for name in ("terminal", "peak", "invariance", "rotation", "drag", "spin"):
+    for name in ("terminal", "peak", "invariance", "rotation", "drag", "spin", "momentum"):
         q = sub.add_parser(name)
         q.add_argument("--build", required=True)
         q.add_argument("--scene", required=True)
@@ -250,12 +288,15 @@ def main():
         if name in ("terminal", "drag", "spin"):
             q.add_argument("--window", type=float, default=0.2,
                            help="fraction of the run at its end to average over")
+        if name == "momentum":
+            q.add_argument("--min-steps", type=int, default=1000)
         if name == "rotation":
             q.add_argument("--expect", choices=["keep", "change", "broadside"], default="change")
             q.add_argument("--max-tilt-change", type=float, default=2.0)
     args = p.parse_args()
     return {"terminal": cmd_terminal, "peak": cmd_peak, "invariance": cmd_invariance,
-            "rotation": cmd_rotation, "drag": cmd_drag, "spin": cmd_spin}[args.cmd](args)
+            "rotation": cmd_rotation, "drag": cmd_drag, "spin": cmd_spin,
+            "momentum": cmd_momentum}[args.cmd](args)
 
 
 if __name__ == "__main__":

@@ -102,11 +102,21 @@ FluidParams parse_fluid(Section& s) {
     p.control.enabled = true;
     p.control.target = c->vec3("target", {0, 0, 0}, "mean fluid velocity to hold, m/s");
     p.control.gain =
-        c->get<double>("gain", 0.5, "proportional gain per step", Bounds{0.0, 1.0, true, false});
+        c->get<double>("gain", 0.5, "proportional gain per update", Bounds::closed(0.0, 1.0));
     p.control.integral_gain =
-        c->get<double>("integral_gain", 0.05, "integral gain per step", Bounds::closed(0.0, 0.5));
+        c->get<double>("integral_gain", 0.05, "integral gain per update", Bounds::closed(0.0, 0.5));
+    p.control.interval =
+        c->get<double>("interval", 0.0, "seconds between controller updates (0: every step)",
+                       Bounds::non_negative());
+    p.control.feed_forward = c->get<bool>(
+        "feed_forward", true, "start from the exact force that balances the bodies' net weight");
     c->finish();
   }
+  p.loads = s.choice("loads", "penalization", {"penalization", "momentum_exchange"},
+                     "hydrodynamic load on bodies: from the penalization (conserves momentum) "
+                     "or by momentum exchange") == "momentum_exchange"
+                ? LoadMethod::momentum_exchange
+                : LoadMethod::penalization;
   if (auto b = s.optional_section("boundaries", "per-face boundary conditions")) {
     for (int f = 0; f < 6; ++f) p.faces[f] = parse_face(*b, f);
     for (int a = 0; a < 3; ++a) {
@@ -122,6 +132,8 @@ FluidParams parse_fluid(Section& s) {
   p.units = UnitConverter::from_tau(p.dx, p.tau, p.viscosity, p.density);
   p.units.char_velocity = p.characteristic_velocity;
   p.units.char_length = p.characteristic_length;
+  if (p.control.interval > 0)
+    p.control.every = std::max(1L, std::lround(p.control.interval / p.units.dt));
   const UnitConverter& u = p.units;
   if (p.tau < UnitLimits{}.min_tau) s.fail("tau", u.check());
   if (const std::string m = u.check(); !m.empty()) s.fail("characteristic_velocity", m);

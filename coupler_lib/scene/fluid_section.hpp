@@ -11,7 +11,9 @@
 //     characteristic_velocity: 0.05   # m/s, expected flow speed: logs Ma and Re, refuses Ma > 0.3
 //     characteristic_length: 0.001    # m, for Re (default: smallest domain edge)
 //     body_force: [0, 0, -9.81]       # m/s^2 acceleration of the fluid (uniform)
-//     mean_velocity_control: {target: [0, 0, 0], gain: 0.5, integral_gain: 0.05}
+//     mean_velocity_control: {target: [0, 0, 0], gain: 0.5, integral_gain: 0.05,
+//                             interval: 0, feed_forward: true}
+//     loads: penalization             # or momentum_exchange (docs/method-loads.md)
 //     boundaries:
 //       x_min: periodic               # periodic faces must be paired
 //       x_max: periodic
@@ -40,11 +42,24 @@ struct FaceBoundary {
 
 // PI controller on a uniform body force that holds the mean fluid velocity at `target`
 // (hindered settling in a triply periodic box: the force that balances the bodies' weight).
+// Every `interval` seconds (0: every step) with e = target - <u>, lattice units:
+//   sum += e,  F = F_scene + F_ff + gain e + integral_gain sum.
+// The paper's update f <- f - K_p <v> every 1e-4 s is {gain: 0, integral_gain: K_p = 0.01,
+// interval: 1e-4}; feed_forward adds the exact balancing force of a settling box (F_ff).
 struct MeanVelocityControl {
   bool enabled = false;
   std::array<double, 3> target{};  // m/s
-  double gain = 0.5;               // proportional gain, per step (1 = dead-beat without bodies)
-  double integral_gain = 0.05;     // integral gain, per step
+  double gain = 0.5;               // proportional gain, per update (1 = dead-beat without bodies)
+  double integral_gain = 0.05;     // integral gain, per update
+  double interval = 0;             // s between updates; 0: every step
+  long every = 1;                  // derived: steps between updates
+  bool feed_forward = true;        // start from the settling balance's exact force
+};
+
+// How the hydrodynamic load on a body is computed (docs/method-loads.md).
+enum class LoadMethod {
+  penalization,       // from the momentum the penalization exchanges (conserves momentum)
+  momentum_exchange,  // Galilean-invariant momentum exchange over the band's boundary links
 };
 
 struct FluidParams {
@@ -59,6 +74,7 @@ struct FluidParams {
   double characteristic_length = 0;    // m
   std::array<double, 3> body_force{};  // m/s^2, uniform acceleration of the fluid
   MeanVelocityControl control;
+  LoadMethod loads = LoadMethod::penalization;
   std::array<FaceBoundary, 6> faces{};  // default: triply periodic
   UnitConverter units;
   FluidOutputParams output;  // fluid.output, fluid.stability, fluid.validation

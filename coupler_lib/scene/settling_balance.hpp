@@ -5,11 +5,11 @@
 // Each body carries its net weight W_k = (rho_k - rho_f) V_k g (gravity and buoyancy on the
 // DEM side). In a triply periodic box nothing carries the total W = sum_k W_k, so a uniform
 // compensating force density f = -W / V_box acts on the whole box: the mean pressure gradient
-// a bottom wall would provide. The lattice applies f to its nodes, but on nodes inside a body
-// the penalization resets the velocity to the body's every step, so that part never reaches
-// the fluid nor (through the momentum exchange, which sums boundary links only) the body.
-// The body therefore gets its share f V_k explicitly on the DEM side; fluid and bodies then
-// receive -W in total and the mean momentum stays zero.
+// a bottom wall would provide. The lattice applies it to every node, those inside bodies
+// included; a body receives the part on its nodes through the penalization load (the
+// interior's extra momentum is removed by the penalization in the next step and charged to
+// the body, docs/method-loads.md). The external forces then sum to N f dx^3 + W = 0 exactly
+// and the momentum of fluid plus bodies is conserved.
 #include <array>
 #include <vector>
 

@@ -8,8 +8,6 @@
 #include "coupler_lib/coupling/dem_coupler.hpp"
 #include "coupler_lib/coupling/schedule.hpp"
 #include "coupler_lib/coupling/world.hpp"
-#include "coupler_lib/scene/settling_balance.hpp"
-#include "coupler_lib/scene/shape_catalogue.hpp"
 #include "dem_app/body_output.hpp"
 #include "dem_app/coupling/body_trace.hpp"
 #include "dem_app/dem_run.hpp"
@@ -55,17 +53,15 @@ int run_coupled_dem(AppContext& ctx) {
   LammpsEngine engine(ctx.side_comm, setup);
 
   // Weight is applied by LAMMPS (dem.gravity on the body mass); the fluid has no hydrostatic
-  // pressure gradient, so the buoyancy of the displaced fluid is added here explicitly, and in
-  // a triply periodic box the body's share of the compensating force density
+  // pressure gradient, so the buoyancy of the displaced fluid is added here explicitly. In a
+  // triply periodic box the compensating force acts on every lattice node, the bodies' too,
+  // and reaches each body through the penalization load: nothing more is added here
   // (coupler_lib/scene/settling_balance.hpp).
   const double rho_f = scene.fluid->density;
-  const SettlingBalance balance = settling_balance(scene, setup.shapes);
   const Eigen::Vector3d g(scene.dem->gravity[0], scene.dem->gravity[1], scene.dem->gravity[2]);
-  const Eigen::Vector3d f_box(balance.force_density[0], balance.force_density[1],
-                              balance.force_density[2]);
   for (std::size_t id = 0; id < setup.bodies.size(); ++id) {
     const double volume = setup.shapes[size_t(setup.bodies[id].shape)].mass.volume;
-    engine.set_extra_force(std::int64_t(id), -rho_f * volume * g + volume * f_box);
+    engine.set_extra_force(std::int64_t(id), -rho_f * volume * g);
   }
 
   std::unique_ptr<DemCoupler> coupler = replay ? std::make_unique<DemCoupler>(ctx, ctx.cli.replay)

@@ -3,11 +3,15 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <memory>
 #include <vector>
 
 #include "coupler_lib/coupling/fluid_coupler.hpp"
+#include "coupler_lib/coupling/schedule.hpp"
 #include "coupler_lib/coupling/world.hpp"
 #include "coupler_lib/geometry/build_shape.hpp"
+#include "fluid_app/coupling/momentum_audit.hpp"
 #include "fluid_app/coupling/settling_force.hpp"
 #include "fluid_app/fluid_run.hpp"
 #include "fluid_app/hlbm/body_field.hpp"
@@ -62,10 +66,12 @@ int run_typed(AppContext& ctx) {
   hlbm::BodyField<T> bodies(shapes, sub, frame, solver.porous());
   const SettlingForce settling = settling_force(scene, shapes);
   if (settling.active) {
-    // The controller (if any) adds its correction to this feed-forward; without it the
+    // The controller (if any) adds its correction to this feed-forward (or, with
+    // feed_forward: false, finds the force alone, as in the paper); without it the
     // compensating force simply adds to the scene's uniform body force.
     if (scene.fluid->control.enabled) {
-      solver.set_feed_forward_force(settling.fluid_force_lattice);
+      if (scene.fluid->control.feed_forward)
+        solver.set_feed_forward_force(settling.fluid_force_lattice);
     } else {
       auto force = solver.uniform_force();
       for (int a = 0; a < 3; ++a) force[a] += settling.fluid_force_lattice[a];
@@ -81,7 +87,21 @@ int run_typed(AppContext& ctx) {
     return std::chrono::duration<double>(Clock::now() - t).count();
   };
 
-  bodies.update(coupler->receive_states(0));
+  // Triply periodic settling: the momentum audit at the coupling output steps.
+  const Schedule schedule = make_schedule(scene, scene.fluid->units.dt, scene.fluid->units.dt);
+  std::unique_ptr<MomentumAudit> audit;
+  if (settling.active && schedule.output_interval > 0) {
+    std::filesystem::path dir(scene.dem->output.directory);
+    if (dir.is_relative()) dir = std::filesystem::path(scene.file).parent_path() / dir;
+    if (ctx.rank == 0) std::filesystem::create_directories(dir);
+    audit = std::make_unique<MomentumAudit>((dir / (scene.name + "_momentum.csv")).string(), scene,
+                                            shapes, settling.net_weight, solver.comm());
+  }
+  const bool penalty = scene.fluid->loads == LoadMethod::penalization;
+
+  const auto first = coupler->receive_states(0);
+  if (audit) audit->write(0, 0.0, solver, first);
+  bodies.update(first);
   run.start();
   while (!run.done() && !watch.stopped()) {
     auto t = Clock::now();
@@ -89,12 +109,16 @@ int run_typed(AppContext& ctx) {
     lattice_s += seconds_since(t);
     const std::int64_t step = solver.steps();
     t = Clock::now();
-    const auto loads =
-        bodies.momentum_exchange([&](int i, CellIndex c) { return solver.population(i, c); }, step);
+    const auto loads = penalty
+                           ? bodies.penalty_loads(step)
+                           : bodies.momentum_exchange(
+                                 [&](int i, CellIndex c) { return solver.population(i, c); }, step);
     bodies_s += seconds_since(t);
     coupler->send_loads(step, loads);
     if (watch.stopped()) break;
     const auto states = coupler->receive_states(step);
+    if (audit && schedule.output_at(step))
+      audit->write(step, double(step) * scene.fluid->units.dt, solver, states);
     t = Clock::now();
     bodies.update(states);
     bodies_s += seconds_since(t);

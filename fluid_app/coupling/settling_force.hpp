@@ -12,6 +12,7 @@ namespace lbdem {
 struct SettlingForce {
   bool active = false;
   std::array<double, 3> fluid_force_lattice{};  // per node, lattice units
+  std::array<double, 3> net_weight{};           // W, N (what the DEM side applies)
   std::string description;
 };
 

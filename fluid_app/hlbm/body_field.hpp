@@ -78,7 +78,17 @@ class BodyField {
   float body_porosity(std::int64_t id, CellIndex cell) const;
 
   // Partial hydrodynamic force and torque (SI; torque about the centre of mass) on every
-  // body of the last update, summed over the boundary links of the cells this rank owns.
+  // body of the last update from the penalization itself (docs/method-loads.md):
+  //   F_k = -P_k^n + (Q_k^n - Q_k^{n-1}),  T_k = -M_k^n + (L_k^n - L_k^{n-1}),
+  // with the sums the kernel wrote in the last step (PorousField::exchange) over the cells
+  // this rank owns. Call once per step, after the solver step: it keeps Q^n for the next.
+  // Throws std::logic_error if a body left this rank while it still covered some of its
+  // cells (its last Q could then not be returned; the coupler's reach prevents it).
+  std::vector<BodyLoad> penalty_loads(std::int64_t step);
+
+  // The same loads by momentum exchange over the boundary links of the cells this rank owns
+  // (the older method, fluid.loads: momentum_exchange; it misses the momentum of cells that
+  // enter or leave a moving body's band and the body force inside it).
   // f(i, cell): post-stream population i at local cell `cell` (FluidSolver::population).
   template <class Populations>
   std::vector<BodyLoad> momentum_exchange(const Populations& f, std::int64_t step) const;
@@ -95,6 +105,8 @@ class BodyField {
     Eigen::Matrix3d rot = Eigen::Matrix3d::Identity();     // shape frame -> space frame
     Eigen::Matrix3d to_ref = Eigen::Matrix3d::Identity();  // rot^T dx / h
     std::vector<BandCell> band;                            // cells with 0 < d < 1
+    // Q and L of the last step (this rank's cells), for the difference in penalty_loads.
+    std::array<double, 3> covered{}, covered_moment{};
   };
 
   std::vector<ReferencePorosity> shapes_;
@@ -108,6 +120,7 @@ class BodyField {
   std::unordered_map<std::int64_t, std::int32_t> slots_;
   std::vector<std::uint32_t> touched_;  // cells evaluated in this update
   std::vector<std::uint32_t> queue_;    // band search work list
+  std::vector<std::int64_t> departed_;  // bodies taken out in the last update with Q != 0
 
   void next_epoch();
   void set_pose(Tracked& t, const BodyState& s) const;

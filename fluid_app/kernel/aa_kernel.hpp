@@ -22,10 +22,17 @@
 //        = f_i^eq(rho, u+) + (1 - omega)(f_i - f_i^eq(rho, v)).
 // One mechanism carries the uniform body force and the HLBM penalization: a porous cell
 // only changes u+.
+//
+// Loads (docs/method-loads.md): the momentum a porous cell gains in the collision is
+// rho (u+ - v) = F + pen with pen = rho (1 - d)(u_p - v). The porous rows add, per body, the
+// sums of pen, r x pen, (1 - d) rho u+ and (1 - d) r x rho u+ over the cells the body owns
+// (PenaltyExchange); the body's force and torque follow from them exactly.
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <vector>
 
 #include "fluid_app/lattice/d3q19.hpp"
 #include "fluid_app/lattice/local_box.hpp"
@@ -38,6 +45,9 @@ namespace lbdem {
 // `porous_one_body` is the kernel's own row variant for rows whose porous cells all belong to
 // one body (the common case): the body's parameters are broadcast instead of gathered.
 enum class Forcing { none, uniform, porous, porous_one_body };
+
+// Values per body in KernelArgs::exchange: impulse, moment, covered momentum, covered moment.
+inline constexpr int kPenaltyTerms = 12;
 
 // Exact (fixed-point) sums of d rho u* and d rho, so that reductions are associative and the
 // controller's mean velocity is bit-identical for any rank count.
@@ -61,15 +71,23 @@ struct KernelArgs {
   const std::int32_t* body = nullptr;
   std::array<const T*, 9> table{};
   std::array<T, 9> row_body{};     // porous_one_body: the row's body, same layout as `table`
+  std::int32_t row_id = 0;         // porous_one_body: the row's body index + 1
   std::array<T, 3> period{};       // global lattice length on periodic axes
   std::array<T, 3> half_period{};  // period / 2; +infinity on non-periodic axes
+  // Per-body exchange sums (porous modes): entry 0 for body -1 (discarded), body k at k + 1,
+  // 12 values each in PenaltyExchange order. Added to, in a fixed cell order.
+  double* exchange = nullptr;
+  // Row scratch, 12 values per cell of the longest row (kPenaltyTerms planes of `row_len`).
+  T* scratch = nullptr;
+  int row_len = 0;
 };
 
 namespace detail {
 
 template <class T, Forcing Mode, bool Sum>
 inline void collide_cell(const KernelArgs<T>& a, CellIndex cell, int x, int y, int z,
-                         const T (&f)[d3q19::Q], T (&out)[d3q19::Q], FlowSums& s) {
+                         const T (&f)[d3q19::Q], T (&out)[d3q19::Q], FlowSums& s,
+                         T (&ex)[kPenaltyTerms]) {
   using namespace d3q19;
   T rho = 0, jx = 0, jy = 0, jz = 0;
 #pragma GCC unroll 19
@@ -118,6 +136,23 @@ inline void collide_cell(const KernelArgs<T>& a, CellIndex cell, int x, int y, i
     uy += pen * (upy - vy);
     uz += pen * (upz - vz);
     weight = dd;
+    // Momentum the penalization gives this cell, and the (1 - d) share of its
+    // post-collision momentum (the fluid the body covers).
+    const T rp = rho * pen;
+    const T px = rp * (upx - vx), py = rp * (upy - vy), pz = rp * (upz - vz);
+    const T qx = rp * ux, qy = rp * uy, qz = rp * uz;
+    ex[0] = px;
+    ex[1] = py;
+    ex[2] = pz;
+    ex[3] = r[1] * pz - r[2] * py;
+    ex[4] = r[2] * px - r[0] * pz;
+    ex[5] = r[0] * py - r[1] * px;
+    ex[6] = qx;
+    ex[7] = qy;
+    ex[8] = qz;
+    ex[9] = r[1] * qz - r[2] * qy;
+    ex[10] = r[2] * qx - r[0] * qz;
+    ex[11] = r[0] * qy - r[1] * qx;
   }
   if constexpr (Sum) {
     // u* = (v + u+) / 2 (paper, Eq. physicalVelocity).
@@ -172,14 +207,22 @@ inline void collide_row(const KernelArgs<T>& a, int x0, int len, int y, int z, F
       dst[i] = a.f + opposite(i) * a.stride + row;
     }
   }
+  constexpr bool porous = Mode == Forcing::porous || Mode == Forcing::porous_one_body;
   std::int64_t m0 = 0, m1 = 0, m2 = 0, mass = 0;
+  T* const ex_row = a.scratch;
+  const int ex_stride = a.row_len;
 #pragma GCC ivdep
   for (int k = 0; k < len; ++k) {
     T fin[Q], fout[Q];
 #pragma GCC unroll 19
     for (int i = 0; i < Q; ++i) fin[i] = src[i][k];
     FlowSums cs{};
-    collide_cell<T, Mode, Sum>(a, row + k, x0 + k, y, z, fin, fout, cs);
+    T ex[kPenaltyTerms];
+    collide_cell<T, Mode, Sum>(a, row + k, x0 + k, y, z, fin, fout, cs, ex);
+    if constexpr (porous) {
+#pragma GCC unroll 12
+      for (int m = 0; m < kPenaltyTerms; ++m) ex_row[m * ex_stride + k] = ex[m];
+    }
     if constexpr (Sum) {
       m0 += cs.momentum[0];
       m1 += cs.momentum[1];
@@ -194,6 +237,22 @@ inline void collide_row(const KernelArgs<T>& a, int x0, int len, int y, int z, F
     s.momentum[1] += m1;
     s.momentum[2] += m2;
     s.mass += mass;
+  }
+  // The row's exchange sums, in cell order (reproducible): one add per body and term for a
+  // one-body row (cells with d = 1 contribute exact zeros), a scatter by cell otherwise.
+  if constexpr (Mode == Forcing::porous_one_body) {
+    double* acc = a.exchange + kPenaltyTerms * std::size_t(a.row_id);
+    for (int m = 0; m < kPenaltyTerms; ++m) {
+      double sum = 0;
+      for (int k = 0; k < len; ++k) sum += double(ex_row[m * ex_stride + k]);
+      acc[m] += sum;
+    }
+  } else if constexpr (Mode == Forcing::porous) {
+    for (int k = 0; k < len; ++k) {
+      if (a.d[row + k] >= 1.0f) continue;
+      double* acc = a.exchange + kPenaltyTerms * std::size_t(a.body[row + k] + 1);
+      for (int m = 0; m < kPenaltyTerms; ++m) acc[m] += double(ex_row[m * ex_stride + k]);
+    }
   }
 }
 
@@ -210,6 +269,12 @@ void collide_stream(const KernelArgs<T>& args, const CellRange& r, FlowSums& sum
   KernelArgs<T> a = args;
   const int len = r.hi[0] - r.lo[0];
   FlowSums s{};
+  std::vector<T> scratch;
+  if constexpr (Mode == Forcing::porous) {
+    scratch.resize(std::size_t(kPenaltyTerms) * std::size_t(len));
+    a.scratch = scratch.data();
+    a.row_len = len;
+  }
   for (int z = r.lo[2]; z < r.hi[2]; ++z) {
     for (int y = r.lo[1]; y < r.hi[1]; ++y) {
       if constexpr (Mode == Forcing::porous) {
@@ -230,6 +295,7 @@ void collide_stream(const KernelArgs<T>& args, const CellRange& r, FlowSums& sum
         }
         if (lo == hi) {
           for (int m = 0; m < 9; ++m) a.row_body[m] = a.table[m][lo + 1];
+          a.row_id = lo + 1;
           detail::collide_row<T, Odd, Forcing::porous_one_body, Sum>(a, r.lo[0], len, y, z, s);
           continue;
         }

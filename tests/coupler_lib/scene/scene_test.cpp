@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "coupler_lib/scene/scene.hpp"
 
 namespace lbdem {
@@ -50,6 +52,32 @@ TEST(Scene, OutOfRangeValueNamesBounds) {
     EXPECT_NE(m.find("fluid.tau"), std::string::npos) << m;
     EXPECT_NE(m.find("> 0.5"), std::string::npos) << m;
   }
+}
+
+TEST(Scene, LoadMethodAndControllerKeys) {
+  // Default: loads from the penalization; the controller every step with feed-forward.
+  Scene s = parse(kMinimal);
+  EXPECT_EQ(s.fluid->loads, LoadMethod::penalization);
+  s = parse(std::string(kMinimal) + "  loads: momentum_exchange\n");
+  EXPECT_EQ(s.fluid->loads, LoadMethod::momentum_exchange);
+  try {
+    parse(std::string(kMinimal) + "  loads: surface\n");
+    FAIL() << "expected a SceneError";
+  } catch (const SceneError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("fluid.loads"), std::string::npos) << m;
+    EXPECT_NE(m.find("penalization"), std::string::npos) << m;
+  }
+  // The paper's form f <- f - K_p <v> (gain 0, integral gain K_p) every `interval` seconds.
+  s = parse(std::string(kMinimal) +
+            "  mean_velocity_control: {gain: 0, integral_gain: 0.01, interval: 2.0e-3, "
+            "feed_forward: false}\n");
+  const double dt = s.fluid->units.dt;
+  EXPECT_EQ(s.fluid->control.every, std::max(1L, std::lround(2.0e-3 / dt)));
+  EXPECT_FALSE(s.fluid->control.feed_forward);
+  EXPECT_EQ(s.fluid->control.gain, 0.0);
+  EXPECT_THROW(parse(std::string(kMinimal) + "  mean_velocity_control: {interval: -1}\n"),
+               SceneError);
 }
 
 TEST(Scene, WrongTypeAndMissingKey) {

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "validation_support.hpp"
 
@@ -67,6 +68,48 @@ TEST(ForceTorque, AccelerationsMatchNewtonAndEuler) {
                seconds);
   EXPECT_LT(lin, 1e-9);
   EXPECT_LT(ang, 1e-4);
+}
+
+// The coupled loop changes the load before every run of n_DEM substeps (`run N pre no`): each
+// run must give every body exactly dt N F of the load set for it (docs/method-loads.md, the
+// DEM half), also when the load changes from run to run, so that the momentum the fluid gave
+// is the momentum the body gets.
+TEST(ForceTorque, EachRunDeliversExactlyItsLoadsImpulse) {
+  test::WallTimer timer;
+  LammpsEngine engine(MPI_COMM_WORLD,
+                      test::load_setup(test::validation_scene("force_torque.yaml"), true));
+  const auto start = test::all_states(engine);
+  const double dt = engine.dt();
+  const long substeps[] = {7, 3, 5, 2, 6};
+  std::vector<Eigen::Vector3d> impulse(start.size(), Eigen::Vector3d::Zero());
+  for (int run = 0; run < 5; ++run) {
+    // A different load every run: scaled, and turned a little.
+    const double scale = 1.0 + 0.6 * run - 0.15 * run * run;
+    for (const auto& st : engine.owned_states(run)) {
+      const Eigen::Vector3d f =
+          scale * force_of(st.id) + Eigen::Vector3d(0, 2e-4 * run, -1e-4 * run);
+      engine.set_load(st.id, f, Eigen::Vector3d::Zero());
+    }
+    for (const auto& st : start) {
+      const Eigen::Vector3d f =
+          scale * force_of(st.id) + Eigen::Vector3d(0, 2e-4 * run, -1e-4 * run);
+      impulse[static_cast<size_t>(st.id)] += dt * double(substeps[run]) * f;
+    }
+    engine.run(substeps[run]);
+  }
+  const auto end = test::all_states(engine);
+  double worst = 0;
+  for (size_t i = 0; i < end.size(); ++i) {
+    const auto id = end[i].id;
+    const double m = engine.body_mass(id);
+    const Eigen::Vector3d dp = m * (Eigen::Vector3d(end[i].v[0], end[i].v[1], end[i].v[2]) -
+                                    Eigen::Vector3d(start[i].v[0], start[i].v[1], start[i].v[2]));
+    const Eigen::Vector3d& j = impulse[static_cast<size_t>(id)];
+    worst = std::max(worst, (dp - j).norm() / j.norm());
+  }
+  test::report("impulse of changing loads, 4 bodies, 5 runs", "m dv vs sum dt N F relative", worst,
+               timer.seconds());
+  EXPECT_LT(worst, 1e-12);
 }
 
 }  // namespace
