@@ -292,5 +292,9 @@ class Study:
         from . import bodymesh
         scene = os.path.join(self.out, name, "scene.yaml")
         xdmf = bodymesh.write_surfaces(scene)
-        png = bodymesh.render_png(scene, xdmf)
+        try:
+            png = bodymesh.render_png(scene, xdmf, self.log)
+        except RuntimeError as e:  # a picture is not worth losing the study for
+            self.log(f"study: {name}: no picture, the render failed: {str(e)[-600:]}")
+            png = None
         self.log(f"study: {name}: body surfaces {xdmf}" + (f", picture {png}" if png else ""))
