@@ -16,15 +16,11 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from lbdem import study  # noqa: E402
 
 
-def plan(s, shapes, phis, rate, body_cost):
-    """Cells, steps and estimated wall time of every run: per coupled step, the lattice
-    (cells / (fluid ranks x rate)) plus porosity and momentum exchange (bodies / fluid ranks x
-    body_cost, scaled from 6 to the study's cells per diameter as the band, i.e. the surface:
-    (cells per d / 6)^2). Perfect scaling over the fluid ranks is assumed: a lower bound."""
+def plan(s, shapes, phis):
+    """Cells, steps and estimated wall time of every run (Study.estimate: perfect scaling over
+    the fluid ranks assumed, so a lower bound)."""
     n = int(s.c["bodies"])
     vol = n * math.pi / 6 * s.d**3
-    ranks = s.c["run"].get("ranks", [1, 1])[0]
-    per_body = body_cost * (s.d / s.dx / 6.0) ** 2
     total = 0.0
     print(f"{'run':<22}{'cells':>16}{'steps':>9}{'bodies':>8}{'s/step':>9}{'hours':>9}")
     rows = [(f"single_{sh}", [round(k * s.d / s.dx) for k in s.c["single"]["box"]],
@@ -34,13 +30,14 @@ def plan(s, shapes, phis, rate, body_cost):
               float(s.c["run"]["end"]), n) for sh in shapes for phi in phis]
     for name, cells, end, bodies in rows:
         steps = round(end / s.dt)
-        per_step = (cells[0] * cells[1] * cells[2] / rate + bodies * per_body) / ranks
-        total += steps * per_step
-        print(f"{name:<22}{'x'.join(map(str, cells)):>16}{steps:>9}{bodies:>8}{per_step:>9.3g}"
-              f"{steps * per_step / 3600:>9.2f}")
-    print(f"total {total / 3600:.2f} h on {ranks} fluid rank(s) at {rate / 1e6:.3g} M lattice cell "
-          f"updates/s per rank and {1e3 * per_body:.3g} ms per body and step (dx = {s.dx:.4g} m, "
-          f"dt = {s.dt:.4g} s)")
+        wall = s.estimate(steps, cells[0] * cells[1] * cells[2], bodies)
+        total += wall
+        print(f"{name:<22}{'x'.join(map(str, cells)):>16}{steps:>9}{bodies:>8}"
+              f"{wall / steps:>9.3g}{wall / 3600:>9.2f}")
+    per_body = s.body_cost * (s.d / s.dx / 6.0) ** 2
+    print(f"total {total / 3600:.2f} h on {s.ranks} fluid rank(s) at {s.lattice_rate / 1e6:.3g} M "
+          f"lattice cell updates/s per rank and {1e3 * per_body:.3g} ms per body and step "
+          f"(dx = {s.dx:.4g} m, dt = {s.dt:.4g} s)")
 
 
 def main():
@@ -54,16 +51,18 @@ def main():
     p.add_argument("--plan", action="store_true",
                    help="print cells, steps and estimated hours of every run; run nothing")
     p.add_argument("--rate", type=float, default=9.0e6,
-                   help="--plan: lattice cell updates per second and fluid rank (docs/study.md)")
+                   help="lattice cell updates per second and fluid rank, for the cost estimates "
+                        "(docs/study.md)")
     p.add_argument("--body-cost", type=float, default=2.2e-4,
-                   help="--plan: porosity + momentum exchange seconds per body and step at 6 "
-                        "cells per diameter (docs/study.md)")
+                   help="porosity + momentum exchange seconds per body and step at 6 cells per "
+                        "diameter, for the cost estimates (docs/study.md)")
     args = p.parse_args()
     s = study.Study(study.load_study(args.study), args.build, args.out)
     shapes = args.shapes or s.c["shapes"]
     phis = args.phi or [float(v) for v in s.c["solid_fractions"]]
+    s.lattice_rate, s.body_cost = args.rate, args.body_cost
     if args.plan:
-        plan(s, shapes, phis, args.rate, args.body_cost)
+        plan(s, shapes, phis)
         return 0
     render = not args.no_render and s.c.get("render", True)
     s.execute(shapes, phis, render)

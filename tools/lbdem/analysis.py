@@ -58,12 +58,6 @@ def slip_velocity(v_zero_flux, phi):
     return np.asarray(v_zero_flux, float) / (1.0 - phi)
 
 
-def pair_histogram(x, box, edges):
-    i, j, d = geometry.pair_separations(x, box)
-    r = np.linalg.norm(d, axis=-1)
-    return np.histogram(r, bins=edges)[0], i, j, r
-
-
 def radial_distribution(positions, box, r_max=None, bins=50):
     """g(r) as in the paper: <N_pairs(r, r + dr)> / (N (N - 1) / 2 * shell volume / V), averaged
     over configurations, periodic minimum image (r_max <= L_min / 2). The exact shell volume
@@ -77,7 +71,8 @@ def radial_distribution(positions, box, r_max=None, bins=50):
     n = positions.shape[1]
     counts = np.zeros(bins)
     for x in positions:
-        counts += pair_histogram(x, box, edges)[0]
+        d = geometry.pair_separations(x, box)[2]
+        counts += np.histogram(np.linalg.norm(d, axis=-1), bins=edges)[0]
     shell = 4.0 / 3.0 * np.pi * (edges[1:] ** 3 - edges[:-1] ** 3)
     ideal = 0.5 * n * (n - 1) * shell / np.prod(box)
     return 0.5 * (edges[1:] + edges[:-1]), counts / (len(positions) * ideal)

@@ -224,13 +224,15 @@ def render_png(scene_path, bodies_xdmf, log=print):
     script = os.path.join(os.path.dirname(bodies_xdmf), "render.py")
     with open(script, "w") as f:
         f.write(RENDER)
-    cmd = [xvfb, "-a", "-s", "-screen 0 1280x1024x24", pvbatch, "--force-offscreen-rendering",
-           script, bodies_xdmf, fluid if os.path.exists(fluid) else "-", png]
-    for _ in range(3):  # xvfb-run -a now and then hands out a display that is not ready yet
+    # Debian's pvbatch 5.11 under Xvfb fails now and then (30-40 % of the calls on the shared
+    # machine, "bad X server connection" from a live server; the cause is not known): retry.
+    for attempt in range(8):
+        display = str(100 + (os.getpid() * 7 + attempt * 131) % 800)
+        cmd = [xvfb, "-a", "-n", display, "-s", "-screen 0 1280x1024x24", pvbatch,
+               "--force-offscreen-rendering", script, bodies_xdmf,
+               fluid if os.path.exists(fluid) else "-", png]
         proc = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
         if proc.returncode == 0 and os.path.exists(png):
-            break
-    if proc.returncode != 0 or not os.path.exists(png):
-        raise RuntimeError(f"{' '.join(cmd)} failed ({proc.returncode}):\n"
-                           f"{(proc.stdout + proc.stderr)[-3000:]}")
-    return png
+            return png
+    raise RuntimeError(f"{' '.join(cmd)} failed ({proc.returncode}):\n"
+                       f"{(proc.stdout + proc.stderr)[-3000:]}")

@@ -116,17 +116,14 @@ def read_bodies_h5(path):
     return out
 
 
-def write_bodies_csv(path, position, orientation=None, velocity=None, comment=""):
+def write_bodies_csv(path, position, orientation=None, comment=""):
     """A bodies file for the scene key `bodies: [{file: ...}]` (docs/study.md): columns x, y, z and
-    optionally qw, qx, qy, qz and vx, vy, vz, full precision."""
+    optionally qw, qx, qy, qz, full precision."""
     cols = ["x", "y", "z"]
     parts = [np.asarray(position, float)]
     if orientation is not None:
         cols += ["qw", "qx", "qy", "qz"]
         parts.append(np.asarray(orientation, float))
-    if velocity is not None:
-        cols += ["vx", "vy", "vz"]
-        parts.append(np.asarray(velocity, float))
     table = np.hstack(parts)
     with open(path, "w") as f:
         for line in comment.splitlines():

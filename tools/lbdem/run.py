@@ -1,7 +1,6 @@
 """Launching runs through the real entry points (the README: "Running").
 
     mpirun -np A fluid_app scene.yaml : -np B dem_app scene.yaml     (coupled, MPMD)
-    mpirun -np B dem_app scene.yaml                                    (DEM-only)
 
 Runs start in the scene's folder; Open MPI is allowed to run as root and to oversubscribe (the
 shared development machine has 2 cores).
@@ -30,11 +29,6 @@ def coupled_command(build, scene, fluid_ranks=1, dem_ranks=1):
     scene = os.path.abspath(scene)
     return mpirun() + ["-np", str(fluid_ranks), fluid, scene, ":", "-np", str(dem_ranks), dem,
                        scene]
-
-
-def dem_command(build, scene, ranks=1):
-    dem = os.path.abspath(os.path.join(build, "dem_app", "dem_app"))
-    return mpirun() + ["-np", str(ranks), dem, os.path.abspath(scene)]
 
 
 def execute(cmd, scene, timeout=None, log=None, extra_env=None):

@@ -48,20 +48,28 @@ class Study:
         # Lattice viscosity (tau - 1/2) / 3 in units dx^2 / dt.
         self.dt = (self.tau - 0.5) / 3.0 * self.dx**2 / self.nu
         self.clump = os.path.normpath(os.path.join(base, config["cube_clump"]))
-        self.finished = []  # (steps, cells, wall s) of the runs of this call
+        self.finished = []  # (steps, cells, bodies, wall s) of the runs of this call
+        self.lattice_rate, self.body_cost = 9.0e6, 2.2e-4  # measured here (docs/study.md, "Cost")
+        self.ranks = int(config.get("run", {}).get("ranks", [1, 1])[0])
 
-    def estimate(self, steps, cells):
-        """Wall seconds of a run, from the runs finished in this call: wall = steps (c0 + c1 cells)
-        fitted by least squares (a per-step cost of the bodies and the coupling plus a cost per
-        cell update); 2e6 cell updates per second before any run has finished."""
-        if not self.finished:
-            return steps * cells / 2.0e6
-        a = np.array([[s, s * c] for s, c, _ in self.finished], float)
-        w = np.array([t for _, _, t in self.finished], float)
-        coef = np.linalg.lstsq(a, w, rcond=None)[0] if len(w) > 1 else np.array([-1.0, 0.0])
-        if np.any(coef < 0):  # one run, or a fit without meaning: cost per cell update alone
-            coef = np.array([0.0, w.sum() / a[:, 1].sum()])
-        return steps * (coef[0] + coef[1] * cells)
+    def estimate(self, steps, cells, bodies):
+        """Wall seconds of a run: steps x (cells / rate + bodies x per-body cost) / fluid ranks,
+        the lattice and the porosity + momentum exchange of a coupled step (docs/study.md,
+        "Cost"). Before any run: 9e6 cell updates/s per rank and 0.22 ms per body and step at 6
+        cells per diameter, times (cells per d / 6)^2 (the band's cells); after runs, both fitted
+        to them by least squares (only the rate while all finished runs have one body count)."""
+        per_body = self.body_cost * (self.d / self.dx / 6.0) ** 2
+        inv_rate = 1.0 / self.lattice_rate
+        if self.finished:
+            a = np.array([[n * c, n * b] for n, c, b, _ in self.finished], float)
+            w = np.array([t for *_, t in self.finished], float) * self.ranks
+            if len({b for *_, b, _ in self.finished}) > 1:
+                fit = np.linalg.lstsq(a, w, rcond=None)[0]
+                if np.all(fit > 0):
+                    inv_rate, per_body = fit
+            else:
+                inv_rate = max((w - a[:, 1] * per_body).sum() / a[:, 0].sum(), 1e-12)
+        return steps * (cells * inv_rate + bodies * per_body) / self.ranks
 
     # ---- scenes -------------------------------------------------------------------------------
     def shape_entry(self, shape):
@@ -168,7 +176,8 @@ class Study:
             f.write(text)
         steps = round(scene["time"]["end"] / self.dt)
         work = float(np.prod(cells)) * steps
-        est = self.estimate(steps, float(np.prod(cells)))
+        n_bodies = 1 if bodies is None else bodies.n
+        est = self.estimate(steps, float(np.prod(cells)), n_bodies)
         ranks = self.c["run"].get("ranks", [1, 1])
         self.log(f"study: [{index}/{total}] {name}: {cells[0]}x{cells[1]}x{cells[2]} cells, "
                  f"{steps} steps; estimated {est:.0f} s for this run, {est + remaining:.0f} s to "
@@ -177,7 +186,7 @@ class Study:
                           log=os.path.join(folder, "run.log"))
         res = {"name": name, "wall_s": wall, "cells": cells, "steps": steps,
                "cell_updates_per_s": work / wall, "ranks": ranks}
-        self.finished.append((steps, float(np.prod(cells)), wall))
+        self.finished.append((steps, float(np.prod(cells)), n_bodies, wall))
         with open(result_file, "w") as f:
             json.dump(res, f, indent=1)
         self.log(f"study: [{index}/{total}] {name}: finished in {wall:.0f} s "
@@ -203,6 +212,8 @@ class Study:
         speed = -analysis.settling_velocity(tr["vz"].mean(axis=1), j)
         start = analysis.mser_start(speed)
         mean, err = analysis.block_average(speed[start:])
+        # The settling balance should hold the volume flux j near 0; its drift is reported.
+        j_slope = float(np.polyfit(tr.time[start:], j[start:], 1)[0]) if len(j) - start > 1 else 0.0
         steady = slice(max(start, len(tr.time) - 100), None)  # the paper: the last 100 snapshots
         x, v = tr.vectors("")[steady], tr.vectors("v")[steady]
         r, g = analysis.radial_distribution(x, box, bins=int(self.c.get("rdf_bins", 40)))
@@ -218,7 +229,8 @@ class Study:
                # Batchelor's dilute limit only where it is meant to hold.
                "batchelor": references.batchelor(phi_m) if phi_m <= 0.1 else None,
                "t_steady": float(tr.time[start]),
-               "t_end": float(tr.time[-1]), "snapshots_analysed": int(len(x)),
+               "t_end": float(tr.time[-1]), "volume_flux_end": float(j[-1]),
+               "volume_flux_drift": j_slope, "snapshots_analysed": int(len(x)),
                "wall_s": result["wall_s"]}
         curves = {"time": tr.time, "speed": speed, "r": r, "g": g, "rc": rc, "C": c,
                   "lag": dt_out * np.arange(len(vacf)), "vacf": vacf}
@@ -254,8 +266,9 @@ class Study:
                 scenes.append((sc["name"], sc, cells, p))
         results = {}
         for k, (name, sc, cells, p) in enumerate(scenes):
-            remaining = sum(self.estimate(round(s["time"]["end"] / self.dt), float(np.prod(c)))
-                            for _, s, c, _ in scenes[k + 1:])
+            remaining = sum(self.estimate(round(s["time"]["end"] / self.dt), float(np.prod(c)),
+                                          1 if q is None else q.n)
+                            for _, s, c, q in scenes[k + 1:])
             results[name] = self.launch(name, sc, cells, p, k + 1, len(scenes), remaining)
         rows, curves = [], {}
         for shape in shapes:
@@ -271,6 +284,11 @@ class Study:
                          f"{row['u_over_uT_error']:.4f} (Richardson-Zaki "
                          f"{row['richardson_zaki']:.4f}, Batchelor {row['batchelor']}), steady "
                          f"from {row['t_steady']:.3g} s")
+                if abs(row["volume_flux_end"]) > 0.1 * u_t:
+                    self.log(f"study: {name}: WARNING the volume flux j = "
+                             f"{row['volume_flux_end']:.4g} m/s at the end (drift "
+                             f"{row['volume_flux_drift']:.3g} m/s^2): the box as a whole does not "
+                             "hold its momentum")
                 if render:
                     self.render(name)
         self.write_summary(rows)
@@ -292,5 +310,9 @@ class Study:
         from . import bodymesh
         scene = os.path.join(self.out, name, "scene.yaml")
         xdmf = bodymesh.write_surfaces(scene)
-        png = bodymesh.render_png(scene, xdmf)
+        try:
+            png = bodymesh.render_png(scene, xdmf, self.log)
+        except RuntimeError as e:  # a picture is not worth losing the study for
+            self.log(f"study: {name}: no picture, the render failed: {str(e)[-600:]}")
+            png = None
         self.log(f"study: {name}: body surfaces {xdmf}" + (f", picture {png}" if png else ""))

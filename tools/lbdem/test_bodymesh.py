@@ -9,7 +9,7 @@ import h5py
 import numpy as np
 import yaml
 
-from lbdem import bodymesh
+from lbdem import bodymesh, io
 
 HEADER = "time,id,x,y,z,vx,vy,vz,wx,wy,wz,qw,qx,qy,qz,fx,fy,fz,tx,ty,tz\n"
 
@@ -56,6 +56,26 @@ class BodyMesh(unittest.TestCase):
                 # The turned cube reaches 0.05 sqrt(2) along x.
                 self.assertAlmostEqual(p[8:, 0].max() - 0.6, 0.05 * np.sqrt(2))
                 np.testing.assert_array_equal(h5["t000001/vz"][()], [-1.0] * 8 + [-2.0] * 8)
+
+
+class BodyOutput(unittest.TestCase):
+    def test_reads_the_dem_snapshots(self):
+        # The layout dem_app/body_output.cpp writes: one group per snapshot, a time attribute.
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "b.h5")
+            with h5py.File(path, "w") as h5:
+                for k, t in enumerate((0.0, 0.01)):
+                    g = h5.create_group(f"snapshot_{k:06d}")
+                    g["position"] = np.full((2, 3), t)
+                    g["orientation"] = np.tile([1.0, 0, 0, 0], (2, 1))
+                    g["velocity"] = g["angular_velocity"] = np.zeros((2, 3))
+                    g["id"] = np.array([[0], [1]])
+                    g["shape"] = np.array([[0], [0]], dtype=np.int32)
+                    g.attrs["time"] = t
+            snaps = io.read_bodies_h5(path)
+            self.assertEqual([s["time"] for s in snaps], [0.0, 0.01])
+            np.testing.assert_array_equal(snaps[1]["position"], np.full((2, 3), 0.01))
+            np.testing.assert_array_equal(snaps[0]["id"], [0, 1])
 
 
 if __name__ == "__main__":

@@ -18,6 +18,7 @@ class Sweep(unittest.TestCase):
             s = study.Study(dict(CONFIG, _file=os.path.join(d, "s.yaml")), "build", out=d,
                             log=lambda _: None)
             scene, cells = s.base_scene("a", [1e-3] * 3, 0.01), [10, 10, 10]
+            s.finished = []
             calls = []
 
             def fake_run(build, path, *args, **kw):
@@ -38,12 +39,18 @@ class Sweep(unittest.TestCase):
                 s.launch("a", scene, cells)
                 self.assertEqual(len(calls), 3)
 
-    def test_estimate_fits_per_step_and_per_cell_cost(self):
+    def test_estimate_fits_lattice_and_body_cost(self):
         s = study.Study(dict(CONFIG, _file="/x/s.yaml"), "build", out="/x", log=lambda _: None)
-        self.assertEqual(s.estimate(100, 2e6), 100.0)  # 2e6 cell updates/s before any run
-        # wall = steps (0.01 + 1e-7 cells), exactly: the fit recovers it.
-        s.finished = [(n, c, n * (0.01 + 1e-7 * c)) for n, c in [(100, 1e4), (200, 1e5)]]
-        self.assertAlmostEqual(s.estimate(300, 5e5), 300 * (0.01 + 0.05), places=9)
+        # Defaults: 9e6 cell updates/s, 0.22 ms per body and step at 6 cells per diameter.
+        self.assertAlmostEqual(s.estimate(100, 9e6, 10), 100 * (1 + 10 * 2.2e-4))
+        # wall = steps (cells / 5e6 + bodies 1e-3), exactly: the fit recovers it.
+        s.finished = [(n, c, b, n * (c / 5e6 + b * 1e-3)) for n, c, b in [(100, 1e5, 1),
+                                                                            (200, 3e4, 27)]]
+        self.assertAlmostEqual(s.estimate(300, 5e5, 64), 300 * (0.1 + 0.064), places=9)
+        # One body count only: the rate is fitted with the default per-body cost, so the run
+        # itself is reproduced.
+        s.finished = s.finished[:1]
+        self.assertAlmostEqual(s.estimate(10, 1e5, 1), 10 * (1e5 / 5e6 + 1e-3), places=9)
 
 
 if __name__ == "__main__":
