@@ -56,7 +56,8 @@ struct FluidParams {
   double viscosity = 1e-6;         // kinematic, m^2/s
   double tau = 0.6;
   std::string precision = "double";
-  std::string porosity_lookup = "trilinear";  // trilinear | nearest (fluid_app/hlbm)
+  // How HLBM nodes read a body's reference porosity: trilinear | nearest (fluid_app/hlbm).
+  std::string porosity_lookup = "trilinear";
   double characteristic_velocity = 0;  // m/s, 0 = not given
   double characteristic_length = 0;    // m
   std::array<double, 3> body_force{};  // m/s^2, uniform acceleration of the fluid
