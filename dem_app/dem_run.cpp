@@ -21,7 +21,7 @@ std::string describe_engine_inputs(const DemSetup& setup) {
   size_t spheres = 0;
   for (const auto& b : setup.bodies) {
     const Shape& sh = setup.shapes[static_cast<size_t>(b.shape)];
-    t_r = std::min(t_r, rayleigh_time(smallest_sphere_radius(sh), b.density, m));
+    t_r = std::min(t_r, rayleigh_time(time_step_radius(sh, setup.params), b.density, m));
     spheres += sh.clump.radii.size();
   }
   s << setup.bodies.size() << " bodies, " << spheres << " clump spheres; E = " << m.young_modulus

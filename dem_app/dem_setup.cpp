@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <sstream>
 #include <unordered_map>
 
@@ -209,12 +210,19 @@ void validate_dem_setup(const DemSetup& s) {
   if (!(dem_time_step(s) > 0)) fail(s, "dem.dt: the DEM time step must be positive");
 }
 
+double time_step_radius(const Shape& shape, const DemParams& params) {
+  if (params.dt_rule == "particle")
+    return std::cbrt(3.0 * shape.mass.volume / (4.0 * std::numbers::pi));
+  return smallest_sphere_radius(shape);
+}
+
 double dem_time_step(const DemSetup& setup) {
   if (setup.params.dt > 0) return setup.params.dt;
   double t = std::numeric_limits<double>::infinity();
   for (const auto& b : setup.bodies) {
     const Shape& sh = setup.shapes[static_cast<size_t>(b.shape)];
-    t = std::min(t, rayleigh_time(smallest_sphere_radius(sh), b.density, setup.params.material));
+    t = std::min(
+        t, rayleigh_time(time_step_radius(sh, setup.params), b.density, setup.params.material));
   }
   return setup.params.dt_fraction * t;
 }

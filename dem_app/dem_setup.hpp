@@ -38,6 +38,10 @@ double smallest_sphere_radius(const Shape& shape);
 // Largest distance of a clump sphere's surface from the centroid (LAMMPS's body extent).
 double clump_extent(const Shape& shape);
 
+// Radius whose Rayleigh time sets the DEM step for a body of this shape (dem.dt_rule): the
+// smallest clump sphere, or the volume-equivalent sphere of the body.
+double time_step_radius(const Shape& shape, const DemParams& params);
+
 // DEM step: dem.dt if given, else dt_fraction x the smallest Rayleigh time over the bodies.
 double dem_time_step(const DemSetup& setup);
 

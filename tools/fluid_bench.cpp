@@ -1,11 +1,12 @@
 // fluid_bench: MLUPS of the D3Q19 kernel against the machine's memory-bandwidth roofline.
 //
-//   mpirun -np 1 fluid_bench [--sizes 64,128,192] [--seconds 1.5] [--porous]
+//   mpirun -np 1 fluid_bench [--sizes 64,128,192] [--seconds 1.5] [--porous [--phi 0.034]]
 //
 // For each lattice size and both precisions it runs the solver on a triply periodic box
 // (all ranks of MPI_COMM_WORLD), and prints one line: precision, variant, MLUPS, bytes per
 // cell update, and the fraction of the roofline. --porous adds the HLBM variant (porosity
-// field with moving, spinning spherical bodies). The roofline is measured in the same run:
+// field with moving, spinning spherical bodies, solid fraction --phi, default 0.034; --phi 0
+// keeps the porous field active with no body cell). The roofline is measured in the same run:
 // a STREAM-copy loop over arrays far larger than the caches, on all ranks at once, gives the
 // copy bandwidth B (bytes read + written per second, all ranks together); the roofline is
 // B / (bytes per cell update) cell updates per second. The last column divides by an
@@ -18,6 +19,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -87,12 +89,13 @@ lbdem::FluidParams cube(int n) {
 
 // Million lattice updates per second of the whole domain.
 template <class T>
-double mlups(int n, bool porous, double seconds, MPI_Comm comm) {
+double mlups(int n, bool porous, double phi, double seconds, MPI_Comm comm) {
   lbdem::FluidSolver<T> s(cube(n), comm);
   if (porous) {
-    // Spheres of radius 6.4 cells on a 32-cell grid (solid fraction 3.4 %, 13 % of the rows
-    // cross a body), each a body moving and spinning: the HLBM situation of a dilute
-    // suspension. Rows without a body cell take the plain forced path.
+    // Spheres on a 32-cell grid, radius (3 phi / 4 pi)^(1/3) 32 cells (phi = 0.034: 6.4 cells,
+    // 13 % of the rows cross a body), each a body moving and spinning: the HLBM situation of
+    // a suspension. Rows without a body cell take the plain forced path.
+    const double radius = 32.0 * std::cbrt(3.0 * phi / (4.0 * std::numbers::pi));
     lbdem::PorousField<T>& pf = s.porous();
     const lbdem::LocalBox& b = s.box();
     const int per = std::max(1, n / 32);
@@ -107,7 +110,7 @@ double mlups(int n, bool porous, double seconds, MPI_Comm comm) {
           const int g[3] = {b.offset[0] + x - 1, b.offset[1] + y - 1, b.offset[2] + z - 1};
           double r2 = 0;
           for (int a = 0; a < 3; ++a) r2 += (g[a] % 32 + 0.5 - 16) * (g[a] % 32 + 0.5 - 16);
-          const double d = std::clamp(std::sqrt(r2) - 6.4 + 0.5, 0.0, 1.0);
+          const double d = std::clamp(std::sqrt(r2) - radius + 0.5, 0.0, 1.0);
           if (d < 1) {
             const lbdem::CellIndex cell = b.index(x, y, z);
             pf.d[cell] = float(d);
@@ -150,6 +153,7 @@ int main(int argc, char** argv) {
   std::vector<int> sizes = {64, 128, 192};
   double seconds = 1.5;
   bool porous = false;
+  double phi = 0.034;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--sizes" && i + 1 < argc) {
@@ -158,9 +162,13 @@ int main(int argc, char** argv) {
       seconds = std::atof(argv[++i]);
     } else if (a == "--porous") {
       porous = true;
+    } else if (a == "--phi" && i + 1 < argc) {
+      phi = std::atof(argv[++i]);
     } else {
       if (rank == 0)
-        std::fprintf(stderr, "usage: fluid_bench [--sizes 64,128,192] [--seconds S] [--porous]\n");
+        std::fprintf(stderr,
+                     "usage: fluid_bench [--sizes 64,128,192] [--seconds S] [--porous [--phi "
+                     "F]]\n");
       MPI_Finalize();
       return 2;
     }
@@ -179,8 +187,8 @@ int main(int argc, char** argv) {
     for (int prec = 0; prec < 2; ++prec)
       for (int v = 0; v < (porous ? 2 : 1); ++v) {
         const bool por = v == 1;
-        const double m = prec == 0 ? mlups<double>(n, por, seconds, MPI_COMM_WORLD)
-                                   : mlups<float>(n, por, seconds, MPI_COMM_WORLD);
+        const double m = prec == 0 ? mlups<double>(n, por, phi, seconds, MPI_COMM_WORLD)
+                                   : mlups<float>(n, por, phi, seconds, MPI_COMM_WORLD);
         const int bytes = prec == 0 ? lbdem::FluidSolver<double>::bytes_per_cell_update(por)
                                     : lbdem::FluidSolver<float>::bytes_per_cell_update(por);
         const double roof = bw / bytes * 1e-6;

@@ -44,9 +44,13 @@ DemParams parse_dem(Section& s) {
   p.dt = s.get<double>("dt", 0.0, "DEM time step in s (0: dt_fraction times the Rayleigh time)",
                        Bounds::non_negative());
   p.dt_fraction = s.get<double>("dt_fraction", 0.05,
-                                "DEM time step as a fraction of the Rayleigh time of the smallest "
-                                "clump sphere (paper: 0.05)",
+                                "DEM time step as a fraction of the Rayleigh time (of the sphere "
+                                "dt_rule names; paper: 0.05)",
                                 {0.0, 1.0, true, false});
+  p.dt_rule = s.choice("dt_rule", "clump_sphere", {"clump_sphere", "particle"},
+                       "radius of the Rayleigh time for dt_fraction: clump_sphere (the smallest "
+                       "clump sphere) or particle (the body's volume-equivalent sphere, the "
+                       "paper's rule: larger steps, contacts resolved by fewer of them)");
   if (auto m = s.optional_section("material", "contact material of bodies and walls"))
     p.material = parse_material(*m);
   if (auto b = s.optional_section("box", "DEM box (default: [0, fluid.domain])")) {

@@ -63,7 +63,8 @@ int run_typed(AppContext& ctx) {
 
   hlbm::Subdomain sub{solver.box(), geometry.periodic};
   hlbm::LatticeFrame frame{Eigen::Vector3d::Zero(), scene.fluid->units};
-  hlbm::BodyField<T> bodies(shapes, sub, frame, solver.porous());
+  hlbm::BodyField<T> bodies(shapes, sub, frame, solver.porous(),
+                            hlbm::porosity_lookup_from(scene.fluid->porosity_lookup));
   const SettlingForce settling = settling_force(scene, shapes);
   if (settling.active) {
     // The controller (if any) adds its correction to this feed-forward (or, with

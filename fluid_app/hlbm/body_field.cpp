@@ -18,12 +18,20 @@ namespace {
 // Larger moves re-embed the body from scratch.
 constexpr double kMaxIncrementalMove = 0.5;
 
+// Local coordinates of a cell index with 32-bit divisions (the indices fit 32 bits, checked
+// in the constructor); cheaper than LocalBox::coords on the per-cell paths.
+std::array<int, 3> coords32(const LocalBox& b, std::uint32_t cell) {
+  const auto sx = static_cast<std::uint32_t>(b.sx()), sy = static_cast<std::uint32_t>(b.sy());
+  const std::uint32_t q = cell / sx, z = q / sy;
+  return {static_cast<int>(cell - q * sx), static_cast<int>(q - z * sy), static_cast<int>(z)};
+}
+
 }  // namespace
 
 template <class T>
 BodyField<T>::BodyField(std::span<const Shape> shapes, const Subdomain& sub,
-                        const LatticeFrame& frame, PorousField<T>& field)
-    : sub_(sub), frame_(frame), field_(field) {
+                        const LatticeFrame& frame, PorousField<T>& field, PorosityLookup lookup)
+    : lookup_(lookup), sub_(sub), frame_(frame), field_(field) {
   const auto cells = static_cast<std::size_t>(sub.box.cells_with_ghosts());
   if (cells >= std::numeric_limits<std::uint32_t>::max())
     throw std::invalid_argument("BodyField: local box too large for 32-bit cell indices");
@@ -49,7 +57,11 @@ template <class T>
 float BodyField<T>::body_porosity(std::int64_t id, CellIndex cell) const {
   const std::int32_t slot = slot_of(id);
   if (slot < 0) return 1.0f;
-  return porosity(tracked_[static_cast<std::size_t>(slot)], static_cast<std::uint32_t>(cell));
+  const Tracked& t = tracked_[static_cast<std::size_t>(slot)];
+  const auto l = sub_.box.coords(cell);
+  Eigen::Vector3d r;
+  for (int a = 0; a < 3; ++a) r[a] = sub_.min_image(a, sub_.position(a, l[a]) - t.x[a]);
+  return porosity(t, r);
 }
 
 template <class T>
@@ -77,25 +89,36 @@ void BodyField<T>::set_pose(Tracked& t, const BodyState& s) const {
   t.to_ref = t.rot.transpose() * (dx / shapes_[static_cast<std::size_t>(t.shape)].spacing());
 }
 
-// Paper, appendix "Representation of a particle in the fluid": the node is mapped into the
-// shape frame (minimum-image offset from the centre, rotated by q^-1) and gets the smoothed
-// reference porosity there.
+// Paper, appendix "Representation of a particle in the fluid": the node at minimum-image
+// offset r (lattice units) from the centre is mapped into the shape frame (rotated by q^-1)
+// and gets the smoothed reference porosity there.
 template <class T>
-float BodyField<T>::porosity(const Tracked& t, std::uint32_t cell) const {
-  const auto l = sub_.box.coords(cell);
-  Eigen::Vector3d r;
-  for (int a = 0; a < 3; ++a) r[a] = sub_.min_image(a, sub_.position(a, l[a]) - t.x[a]);
+float BodyField<T>::porosity(const Tracked& t, const Eigen::Vector3d& r) const {
   const ReferencePorosity& ref = shapes_[static_cast<std::size_t>(t.shape)];
-  return static_cast<float>(ref.at(t.to_ref * r + ref.shift()));
+  return static_cast<float>(ref.at(t.to_ref * r + ref.shift(), lookup_));
+}
+
+// The offsets are the same doubles body_porosity() computes, so every path gives a cell the
+// same porosity bit for bit.
+template <class T>
+void BodyField<T>::tabulate_offsets(const Tracked& t) {
+  for (int a = 0; a < 3; ++a) {
+    rel_[a].resize(static_cast<std::size_t>(sub_.box.n[a]) + 2);
+    for (int l = 0; l <= sub_.box.n[a] + 1; ++l)
+      rel_[a][static_cast<std::size_t>(l)] = sub_.min_image(a, sub_.position(a, l) - t.x[a]);
+  }
 }
 
 template <class T>
-float BodyField<T>::evaluate(std::int32_t slot, std::uint32_t cell, std::vector<BandCell>& band,
-                             UpdateStats& stats) {
+float BodyField<T>::evaluate(std::int32_t slot, std::uint32_t cell, int x, int y, int z,
+                             std::vector<BandCell>& band, UpdateStats& stats) {
   mark_[cell] = epoch_;
   touched_.push_back(cell);
   ++stats.evaluated;
-  const float d = porosity(tracked_[static_cast<std::size_t>(slot)], cell);
+  const Eigen::Vector3d r(rel_[0][static_cast<std::size_t>(x)],
+                          rel_[1][static_cast<std::size_t>(y)],
+                          rel_[2][static_cast<std::size_t>(z)]);
+  const float d = porosity(tracked_[static_cast<std::size_t>(slot)], r);
   std::int32_t& in = inside_[cell];
   if (d == 0.0f) {
     if (in >= 0 && in != slot) ++stats.interior_conflicts;
@@ -107,7 +130,8 @@ float BodyField<T>::evaluate(std::int32_t slot, std::uint32_t cell, std::vector<
   return d;
 }
 
-// Local coordinates per axis within the support radius of a body (plus one cell).
+// Local coordinates per axis within the support radius of a body (plus one cell). Reads the
+// offsets tabulated for t (tabulate_offsets).
 template <class T>
 std::array<std::vector<int>, 3> BodyField<T>::support(const Tracked& t) const {
   const double radius =
@@ -115,8 +139,7 @@ std::array<std::vector<int>, 3> BodyField<T>::support(const Tracked& t) const {
   std::array<std::vector<int>, 3> lists;
   for (int a = 0; a < 3; ++a)
     for (int l = 0; l <= sub_.box.n[a] + 1; ++l)
-      if (std::abs(sub_.min_image(a, sub_.position(a, l) - t.x[a])) <= radius)
-        lists[a].push_back(l);
+      if (std::abs(rel_[a][static_cast<std::size_t>(l)]) <= radius) lists[a].push_back(l);
   return lists;
 }
 
@@ -124,13 +147,14 @@ std::array<std::vector<int>, 3> BodyField<T>::support(const Tracked& t) const {
 // when a body appears or jumps).
 template <class T>
 void BodyField<T>::scan(std::int32_t slot, std::vector<BandCell>& band, UpdateStats& stats) {
+  tabulate_offsets(tracked_[static_cast<std::size_t>(slot)]);
   const auto lists = support(tracked_[static_cast<std::size_t>(slot)]);
   ++stats.full_scans;
   for (int z : lists[2])
     for (int y : lists[1])
       for (int x : lists[0]) {
         const auto c = static_cast<std::uint32_t>(sub_.box.index(x, y, z));
-        if (mark_[c] != epoch_) evaluate(slot, c, band, stats);
+        if (mark_[c] != epoch_) evaluate(slot, c, x, y, z, band, stats);
       }
 }
 
@@ -141,6 +165,7 @@ void BodyField<T>::remove(std::int32_t slot, UpdateStats& stats) {
   Tracked& t = tracked_[static_cast<std::size_t>(slot)];
   for (const BandCell& b : t.band) touched_.push_back(b.cell);
   t.band.clear();
+  tabulate_offsets(t);
   const auto lists = support(t);
   ++stats.full_scans;
   for (int z : lists[2])
@@ -166,13 +191,20 @@ template <class T>
 void BodyField<T>::follow_band(std::int32_t slot, std::vector<BandCell>& band, UpdateStats& stats) {
   const LocalBox& box = sub_.box;
   const Tracked& t = tracked_[static_cast<std::size_t>(slot)];
+  tabulate_offsets(t);
   queue_.clear();
-  auto visit = [&](std::uint32_t c) {
+  auto visit = [&](std::uint32_t c, int x, int y, int z) {
     if (mark_[c] == epoch_) return;
-    const float d = evaluate(slot, c, band, stats);
-    if (d > 0.0f && d < 1.0f) queue_.push_back(c);
+    const float d = evaluate(slot, c, x, y, z, band, stats);
+    if (d > 0.0f && d < 1.0f)
+      queue_.push_back({c,
+                        {static_cast<std::int16_t>(x), static_cast<std::int16_t>(y),
+                         static_cast<std::int16_t>(z)}});
   };
-  for (const BandCell& b : t.band) visit(b.cell);
+  for (const BandCell& b : t.band) {
+    const auto l = coords32(box, b.cell);
+    visit(b.cell, l[0], l[1], l[2]);
+  }
 
   const auto lists = support(t);
   for (int a = 0; a < 3; ++a) {
@@ -187,32 +219,35 @@ void BodyField<T>::follow_band(std::int32_t slot, std::vector<BandCell>& band, U
           l[a] = face;
           l[b] = lb;
           l[c] = lc;
-          visit(static_cast<std::uint32_t>(box.index(l[0], l[1], l[2])));
+          visit(static_cast<std::uint32_t>(box.index(l[0], l[1], l[2])), l[0], l[1], l[2]);
         }
     }
   }
 
-  std::array<CellIndex, 27> offsets;
+  struct Offset {
+    std::int64_t shift;
+    int dx, dy, dz;
+  };
+  std::array<Offset, 26> offsets;
   int n_off = 0;
   for (int dz = -1; dz <= 1; ++dz)
     for (int dy = -1; dy <= 1; ++dy)
       for (int dx = -1; dx <= 1; ++dx)
-        if (dx != 0 || dy != 0 || dz != 0) offsets[n_off++] = box.shift(dx, dy, dz);
+        if (dx != 0 || dy != 0 || dz != 0) offsets[n_off++] = {box.shift(dx, dy, dz), dx, dy, dz};
   for (std::size_t head = 0; head < queue_.size(); ++head) {
-    const std::uint32_t cell = queue_[head];
-    const auto l = box.coords(cell);
-    if (box.interior(l[0], l[1], l[2])) {  // all 26 neighbours are stored: no checks
-      for (int k = 0; k < n_off; ++k)
-        visit(static_cast<std::uint32_t>(CellIndex(cell) + offsets[k]));
+    const Queued q = queue_[head];
+    const int x = q.l[0], y = q.l[1], z = q.l[2];
+    if (box.interior(x, y, z)) {  // all 26 neighbours are stored: no checks
+      for (const Offset& o : offsets)
+        visit(static_cast<std::uint32_t>(std::int64_t(q.cell) + o.shift), x + o.dx, y + o.dy,
+              z + o.dz);
       continue;
     }
-    for (int dz = -1; dz <= 1; ++dz)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const int x = l[0] + dx, y = l[1] + dy, z = l[2] + dz;
-          if (!sub_.stored(0, x) || !sub_.stored(1, y) || !sub_.stored(2, z)) continue;
-          visit(static_cast<std::uint32_t>(box.index(x, y, z)));
-        }
+    for (const Offset& o : offsets) {
+      const int nx = x + o.dx, ny = y + o.dy, nz = z + o.dz;
+      if (!sub_.stored(0, nx) || !sub_.stored(1, ny) || !sub_.stored(2, nz)) continue;
+      visit(static_cast<std::uint32_t>(box.index(nx, ny, nz)), nx, ny, nz);
+    }
   }
 }
 
@@ -314,6 +349,7 @@ UpdateStats BodyField<T>::update(std::span<const BodyState> states, UpdateMode m
     next.covered_moment = t.covered_moment;
 
     std::vector<BandCell> band;
+    band.reserve(t.band.size() + t.band.size() / 8 + 16);  // the band changes little per step
     next_epoch();
     if (fresh || mode == UpdateMode::full) {
       t = std::move(next);

@@ -54,8 +54,9 @@ class BodyField {
   // shapes: the scene's catalogue (BodyState::shape indexes it). field: the arrays the
   // kernel reads (FluidSolver::porous()); they are (re)sized to the box and owned by the
   // caller, who must not write them while this object lives.
+  // lookup: how a mapped node reads the shape's reference porosity (fluid.porosity_lookup).
   BodyField(std::span<const Shape> shapes, const Subdomain& sub, const LatticeFrame& frame,
-            PorousField<T>& field);
+            PorousField<T>& field, PorosityLookup lookup = PorosityLookup::trilinear);
 
   // Embeds the bodies at their new poses. `states` holds every body that can touch this
   // rank's box, each once, any order; bodies absent from it are taken out of the field.
@@ -109,7 +110,14 @@ class BodyField {
     std::array<double, 3> covered{}, covered_moment{};
   };
 
+  // A cell waiting in the band search, with its local coordinates (no index division).
+  struct Queued {
+    std::uint32_t cell;
+    std::array<std::int16_t, 3> l;
+  };
+
   std::vector<ReferencePorosity> shapes_;
+  PorosityLookup lookup_ = PorosityLookup::trilinear;
   Subdomain sub_;
   LatticeFrame frame_;
   PorousField<T>& field_;
@@ -119,14 +127,18 @@ class BodyField {
   std::vector<Tracked> tracked_;  // by slot
   std::unordered_map<std::int64_t, std::int32_t> slots_;
   std::vector<std::uint32_t> touched_;  // cells evaluated in this update
-  std::vector<std::uint32_t> queue_;    // band search work list
+  std::vector<Queued> queue_;           // band search work list
   std::vector<std::int64_t> departed_;  // bodies taken out in the last update with Q != 0
+  // Minimum-image offset from the centre of the body being updated, per axis and local
+  // coordinate (lattice units): tabulated once per body and update, read per evaluation.
+  std::array<std::vector<double>, 3> rel_;
 
   void next_epoch();
   void set_pose(Tracked& t, const BodyState& s) const;
-  float porosity(const Tracked& t, std::uint32_t cell) const;
-  float evaluate(std::int32_t slot, std::uint32_t cell, std::vector<BandCell>& band,
-                 UpdateStats& stats);
+  float porosity(const Tracked& t, const Eigen::Vector3d& r) const;
+  void tabulate_offsets(const Tracked& t);
+  float evaluate(std::int32_t slot, std::uint32_t cell, int x, int y, int z,
+                 std::vector<BandCell>& band, UpdateStats& stats);
   std::array<std::vector<int>, 3> support(const Tracked& t) const;
   void scan(std::int32_t slot, std::vector<BandCell>& band, UpdateStats& stats);
   void remove(std::int32_t slot, UpdateStats& stats);

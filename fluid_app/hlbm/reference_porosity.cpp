@@ -9,13 +9,12 @@
 
 namespace lbdem::hlbm {
 
-namespace {
-
-double lerp(double a, double b, double t) {
-  return a + t * (b - a);
+PorosityLookup porosity_lookup_from(const std::string& name) {
+  if (name == "trilinear") return PorosityLookup::trilinear;
+  if (name == "nearest") return PorosityLookup::nearest;
+  throw std::invalid_argument("porosity lookup must be 'trilinear' or 'nearest', got '" + name +
+                              "'");
 }
-
-}  // namespace
 
 ReferencePorosity::ReferencePorosity(const Voxels& voxels) : h_(voxels.h) {
   const auto& n = voxels.n;
@@ -55,22 +54,6 @@ ReferencePorosity::ReferencePorosity(const Voxels& voxels) : h_(voxels.h) {
         support_radius_ = std::max(support_radius_, r + 2.0 * std::sqrt(3.0) * h_);
         surface_radius_ = std::max(surface_radius_, r + 0.5 * std::sqrt(3.0) * h_);
       }
-}
-
-double ReferencePorosity::at(const Eigen::Vector3d& ref) const {
-  const double fx = std::floor(ref.x()), fy = std::floor(ref.y()), fz = std::floor(ref.z());
-  // Outside the padded lattice everything is fluid; the outer layer of the padded lattice
-  // is 1 as well, so the field is continuous across its edge.
-  if (!(fx >= 0 && fy >= 0 && fz >= 0 && fx < m_[0] - 1 && fy < m_[1] - 1 && fz < m_[2] - 1))
-    return 1.0;
-  const int i = static_cast<int>(fx), j = static_cast<int>(fy), k = static_cast<int>(fz);
-  const double tx = ref.x() - fx, ty = ref.y() - fy, tz = ref.z() - fz;
-  // Nested lerps (not a weighted sum): equal corners give exactly that value.
-  const double c00 = lerp(value(i, j, k), value(i + 1, j, k), tx);
-  const double c10 = lerp(value(i, j + 1, k), value(i + 1, j + 1, k), tx);
-  const double c01 = lerp(value(i, j, k + 1), value(i + 1, j, k + 1), tx);
-  const double c11 = lerp(value(i, j + 1, k + 1), value(i + 1, j + 1, k + 1), tx);
-  return lerp(lerp(c00, c10, ty), lerp(c01, c11, ty), tz);
 }
 
 }  // namespace lbdem::hlbm

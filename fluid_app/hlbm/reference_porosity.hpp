@@ -5,23 +5,33 @@
 // average of that porosity over the mapped point and its q - 1 = 18 D3Q19 neighbours at
 // spacing h.
 //
-// Lookup: trilinear interpolation of the reference lattice (not nearest voxel), so that the
-// porosity of a node, and with it the penalization and the set of boundary links, changes
-// continuously when the body moves or turns by a fraction of a reference cell; nearest
-// lookup would make d jump by 1/19 steps as the mapped point crosses a voxel boundary and
-// feed that noise into the momentum exchange. Because the 19-point average and trilinear
-// interpolation are both linear and the stencil offsets are whole reference cells, the two
-// commute exactly: we average once on the reference lattice at construction and a lookup is
-// one trilinear interpolation (8 loads) instead of 19 of them.
+// Two lookups (scene key fluid.porosity_lookup, docs/performance.md compares them):
+// * trilinear interpolation of the reference lattice: the porosity of a node, and with it the
+//   penalization and the set of boundary links, changes continuously when the body moves or
+//   turns by a fraction of a reference cell. Because the 19-point average and trilinear
+//   interpolation are both linear and the stencil offsets are whole reference cells, the two
+//   commute exactly: we average once on the reference lattice at construction and a lookup
+//   is one trilinear interpolation (8 loads) instead of 19 of them.
+// * nearest voxel (the paper's construction): each of the 19 stencil points takes the voxel
+//   nearest to it. The stencil offsets are whole voxels, so the nearest voxel of s + h c_i is
+//   the nearest voxel of s shifted by c_i, and the lookup is one load of the averaged
+//   lattice. d changes in steps of 1/19 as the body moves, and the band (0 < d < 1) is
+//   narrower than the trilinear one.
 #include <Eigen/Dense>
 
 #include <array>
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "coupler_lib/geometry/shape.hpp"
 
 namespace lbdem::hlbm {
+
+enum class PorosityLookup { trilinear, nearest };
+
+// "trilinear" or "nearest" (the scene's fluid.porosity_lookup, already validated).
+PorosityLookup porosity_lookup_from(const std::string& name);
 
 class ReferencePorosity {
  public:
@@ -30,6 +40,11 @@ class ReferencePorosity {
   // Porosity at a point given in reference-lattice coordinates (see to_reference): 1 off the
   // lattice, 0 deep inside. Exactly 0 or 1 where all 8 interpolation corners are.
   double at(const Eigen::Vector3d& ref) const;
+  // Porosity of the reference voxel nearest to `ref` (the paper's lookup): 1 off the lattice.
+  double nearest(const Eigen::Vector3d& ref) const;
+  double at(const Eigen::Vector3d& ref, PorosityLookup lookup) const {
+    return lookup == PorosityLookup::nearest ? nearest(ref) : at(ref);
+  }
 
   // Reference-lattice coordinates of a shape-frame point p (m): ref = p / h + shift().
   double spacing() const { return h_; }
@@ -55,5 +70,37 @@ class ReferencePorosity {
                        (static_cast<std::size_t>(j) + static_cast<std::size_t>(m_[1]) * k)];
   }
 };
+
+// The lookups are inline: they are the inner loop of every porosity update.
+namespace detail {
+inline double lerp(double a, double b, double t) {
+  return a + t * (b - a);
+}
+}  // namespace detail
+
+inline double ReferencePorosity::at(const Eigen::Vector3d& ref) const {
+  const double x = ref.x(), y = ref.y(), z = ref.z();
+  // Outside the padded lattice everything is fluid; the outer layer of the padded lattice
+  // is 1 as well, so the field is continuous across its edge. Inside, x >= 0 and the integer
+  // conversion is the floor.
+  if (!(x >= 0 && y >= 0 && z >= 0 && x < m_[0] - 1 && y < m_[1] - 1 && z < m_[2] - 1)) return 1.0;
+  const int i = static_cast<int>(x), j = static_cast<int>(y), k = static_cast<int>(z);
+  const double tx = x - i, ty = y - j, tz = z - k;
+  const std::size_t sy = static_cast<std::size_t>(m_[0]);
+  const std::size_t sz = sy * static_cast<std::size_t>(m_[1]);
+  const float* p = &smooth_[static_cast<std::size_t>(i) + sy * j + sz * k];
+  // Nested lerps (not a weighted sum): equal corners give exactly that value.
+  const double c00 = detail::lerp(p[0], p[1], tx);
+  const double c10 = detail::lerp(p[sy], p[sy + 1], tx);
+  const double c01 = detail::lerp(p[sz], p[sz + 1], tx);
+  const double c11 = detail::lerp(p[sz + sy], p[sz + sy + 1], tx);
+  return detail::lerp(detail::lerp(c00, c10, ty), detail::lerp(c01, c11, ty), tz);
+}
+
+inline double ReferencePorosity::nearest(const Eigen::Vector3d& ref) const {
+  const double x = ref.x() + 0.5, y = ref.y() + 0.5, z = ref.z() + 0.5;
+  if (!(x >= 0 && y >= 0 && z >= 0 && x < m_[0] && y < m_[1] && z < m_[2])) return 1.0;
+  return value(static_cast<int>(x), static_cast<int>(y), static_cast<int>(z));
+}
 
 }  // namespace lbdem::hlbm

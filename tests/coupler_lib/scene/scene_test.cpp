@@ -87,5 +87,26 @@ TEST(Scene, WrongTypeAndMissingKey) {
   EXPECT_THROW(parse("time: {end: 1}\nfluid: {domain: [1,1,1], viscosity: 1}\n"), SceneError);
 }
 
+// fluid.porosity_lookup and dem.dt_rule: each value is read, anything else is refused with
+// the key and the admissible values.
+TEST(Scene, PorosityLookupAndDemStepRuleAreChoices) {
+  EXPECT_EQ(parse(kMinimal).fluid->porosity_lookup, "trilinear");
+  Scene s = parse(std::string(kMinimal) + "  porosity_lookup: nearest\ndem: {dt_rule: particle}\n");
+  EXPECT_EQ(s.fluid->porosity_lookup, "nearest");
+  EXPECT_EQ(s.dem->dt_rule, "particle");
+  EXPECT_EQ(parse(std::string(kMinimal) + "dem: {}\n").dem->dt_rule, "clump_sphere");
+  for (const std::string bad : {"  porosity_lookup: cubic\n", "dem: {dt_rule: body}\n"}) {
+    try {
+      parse(std::string(kMinimal) + bad);
+      FAIL() << "expected a SceneError for " << bad;
+    } catch (const SceneError& e) {
+      const std::string m = e.what();
+      const bool fluid = bad.find("porosity") != std::string::npos;
+      EXPECT_NE(m.find(fluid ? "fluid.porosity_lookup" : "dem.dt_rule"), std::string::npos) << m;
+      EXPECT_NE(m.find(fluid ? "nearest" : "particle"), std::string::npos) << m;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace lbdem

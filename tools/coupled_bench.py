@@ -1,0 +1,142 @@
+#!/usr/bin/python3
+"""coupled_bench: throughput of coupled runs against the fluid alone on the same lattice.
+
+    /usr/bin/python3 tools/coupled_bench.py --build build [--quick] [--np-fluid 1 --np-dem 1]
+                                            [--only cubes64_c100,fluid58]
+
+Runs the scenes of configs/bench/ through mpirun exactly as a user would
+(mpirun -np A fluid_app s.yaml : -np B dem_app s.yaml; fluid-only scenes with fluid_app
+alone), then prints one row per scene: MLUPS, the ratio to the fluid-only MLUPS of the same
+lattice, and the wall time per step split into the parts both programs report at the end
+of a coupled run (fluid: lattice, porosity + momentum exchange, exchange, idle; DEM: LAMMPS
+with its substeps, exchange, idle) plus the DEM's clump-sphere steps per second.
+
+MLUPS is the mean of the progress lines after the first one (the first progress interval
+is the warm-up: caches, first embedding, LAMMPS set-up run); with fewer than two progress
+lines it falls back to the cells over the sum of the fluid rank's per-step parts. The split
+is averaged over all steps of the run. --quick runs the two small quick_* scenes for a
+smoke test (ctest checks that every figure is printed, never a time).
+"""
+import argparse
+import os
+import re
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+BENCH = os.path.join(ROOT, "configs", "bench")
+
+# (scene, fluid-only reference scene); a reference of None marks a fluid-only scene.
+FULL = [
+    ("fluid58", None),
+    ("cubes64_c27", "fluid58"),
+    ("cubes64_c100", "fluid58"),
+    ("cubes64_c100_particle_dt", "fluid58"),
+    ("cubes64_c489", "fluid58"),
+    ("fluid72", None),
+    ("cubes125_c27", "fluid72"),
+    ("cubes125_c100", "fluid72"),
+    ("cubes125_c489", "fluid72"),
+    ("fluid135", None),
+    ("spheres967", "fluid135"),
+]
+QUICK = [("quick_fluid29", None), ("quick_cubes8_c27", "quick_fluid29")]
+
+NUM = r"([0-9.eE+-]+)"
+FLUID_SPLIT = re.compile(
+    r"time per coupled step \(fluid rank 0\): lattice " + NUM + r" s, porosity \+ momentum "
+    r"exchange " + NUM + r" s, exchange " + NUM + r" s, idle \(waiting for dem_app\) " + NUM)
+DEM_SPLIT = re.compile(r"time per coupled step \(DEM rank 0\): DEM " + NUM + r" s \((\d+) substeps\), "
+                       r"exchange " + NUM + r" s, idle \(waiting for fluid_app\) " + NUM)
+PROGRESS = re.compile(r"steps/s, " + NUM + r" MLUPS")
+CELLS = re.compile(r"fluid lattice (\d+) x (\d+) x (\d+) = ")
+SPHERES = re.compile(r"(\d+) bodies, (\d+) clump spheres")
+
+
+def run_scene(args, name):
+    scene = os.path.join(BENCH, name + ".yaml")
+    fluid_app = os.path.join(args.build, "fluid_app", "fluid_app")
+    dem_app = os.path.join(args.build, "dem_app", "dem_app")
+    coupled = not name.startswith(("fluid", "quick_fluid"))
+    cmd = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(args.np_fluid),
+           fluid_app, scene]
+    if coupled:
+        cmd += [":", "-np", str(args.np_dem), dem_app, scene]
+    t0 = time.monotonic()
+    p = subprocess.run(cmd, capture_output=True, text=True, cwd=BENCH)
+    wall = time.monotonic() - t0
+    log = p.stdout + p.stderr
+    if p.returncode != 0:
+        sys.stderr.write(log[-4000:])
+        raise SystemExit(f"coupled_bench: {' '.join(cmd)} failed with status {p.returncode}")
+    m = CELLS.search(log)
+    cells = int(m.group(1)) * int(m.group(2)) * int(m.group(3))
+    r = {"name": name, "cells": cells, "wall": wall, "coupled": coupled}
+    rates = [float(x) for x in PROGRESS.findall(log)]
+    if coupled:
+        f = FLUID_SPLIT.search(log)
+        d = DEM_SPLIT.search(log)
+        s = SPHERES.search(log)
+        if not (f and d and s):
+            sys.stderr.write(log[-4000:])
+            raise SystemExit(f"coupled_bench: {name}: the per-step split is missing from the log")
+        r.update(lattice=float(f.group(1)), bodies=float(f.group(2)), f_exchange=float(f.group(3)),
+                 f_idle=float(f.group(4)), dem=float(d.group(1)), substeps=int(d.group(2)),
+                 d_exchange=float(d.group(3)), d_idle=float(d.group(4)), spheres=int(s.group(2)))
+        step = r["lattice"] + r["bodies"] + r["f_exchange"] + r["f_idle"]
+        fallback = cells / step * 1e-6
+    else:
+        fallback = None
+    if len(rates) >= 2:
+        r["mlups"] = sum(rates[1:]) / len(rates[1:])
+        r["from"] = "progress"
+    elif fallback is not None:
+        r["mlups"] = fallback
+        r["from"] = "split"
+    else:
+        raise SystemExit(f"coupled_bench: {name}: fewer than two progress lines; run longer")
+    return r
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--build", default=os.path.join(ROOT, "build"))
+    ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--np-fluid", type=int, default=1)
+    ap.add_argument("--np-dem", type=int, default=1)
+    ap.add_argument("--only", default="", help="comma-separated scene names")
+    args = ap.parse_args()
+    args.build = os.path.abspath(args.build)
+    plan = QUICK if args.quick else FULL
+    if args.only:
+        keep = set(args.only.split(","))
+        plan = [p for p in plan if p[0] in keep]
+    env_note = os.uname().nodename
+    print(f"# coupled_bench: {args.np_fluid} fluid rank(s) : {args.np_dem} DEM rank(s), "
+          f"{time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}, host {env_note}, "
+          f"load average {os.getloadavg()[0]:.1f}")
+    print("# times in ms per fluid step; fluid: lattice, porosity + momentum exchange (bodies), "
+          "exchange, idle; DEM: LAMMPS (substeps), exchange, idle; sphere-steps/s = clump "
+          "spheres x substeps / LAMMPS time")
+    print(f"# {'scene':<26} {'cells':>9} {'MLUPS':>7} {'/fluid':>7} | {'lattice':>8} "
+          f"{'bodies':>8} {'exch':>6} {'idle':>6} | {'DEM':>8} {'sub':>4} {'exch':>6} "
+          f"{'idle':>6} {'sph-steps/s':>11}")
+    fluid_only = {}
+    for name, ref in plan:
+        r = run_scene(args, name)
+        if not r["coupled"]:
+            fluid_only[name] = r["mlups"]
+            print(f"  {name:<26} {r['cells']:>9} {r['mlups']:>7.2f} {'1':>7} |", flush=True)
+            continue
+        ratio = f"{100 * r['mlups'] / fluid_only[ref]:.1f}%" if ref in fluid_only else "-"
+        ms = lambda k: f"{1e3 * r[k]:.2f}"  # noqa: E731
+        rate = r["spheres"] * r["substeps"] / r["dem"] if r["dem"] > 0 else 0.0
+        print(f"  {name:<26} {r['cells']:>9} {r['mlups']:>7.2f} {ratio:>7} | {ms('lattice'):>8} "
+              f"{ms('bodies'):>8} {ms('f_exchange'):>6} {ms('f_idle'):>6} | {ms('dem'):>8} "
+              f"{r['substeps']:>4} {ms('d_exchange'):>6} {ms('d_idle'):>6} {rate:>11.3g}",
+              flush=True)
+
+
+if __name__ == "__main__":
+    main()
