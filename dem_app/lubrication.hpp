@@ -63,6 +63,9 @@ class Lubrication {
   std::vector<std::int64_t> built_tag_;
   std::vector<std::array<double, 3>> built_x_;
   int built_nlocal_ = -1;
+  std::vector<int> head_, next_;    // bins of the last build
+  std::vector<std::int64_t> body_;  // by atom index, last build
+  std::vector<double> radius_;      // by atom index, last build
   long builds_ = 0;
 };
 
