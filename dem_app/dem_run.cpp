@@ -31,6 +31,9 @@ std::string describe_engine_inputs(const DemSetup& setup) {
   else
     s << " (LAMMPS damping tsuji parameter " << c.tsuji_parameter << ")";
   s << "; Rayleigh time " << t_r << " s, DEM dt " << dem_time_step(setup) << " s";
+  if (const auto& l = setup.params.lubrication; l.enabled)
+    s << "; lubrication correction: h_c " << l.cutoff << " m, h_min " << l.min_gap << " m, mu "
+      << l.viscosity << " Pa s";
   for (const auto& sh : setup.shapes)
     s << "; shape '" << sh.name << "': " << sh.clump.radii.size() << " spheres, volume "
       << sh.mass.volume << " m^3";

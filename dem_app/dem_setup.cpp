@@ -8,6 +8,7 @@
 #include <unordered_map>
 
 #include "dem_app/contact_model.hpp"
+#include "dem_app/lubrication_setup.hpp"
 #include "dem_app/quaternion.hpp"
 
 namespace lbdem {
@@ -43,7 +44,8 @@ DemSetup make_dem_setup(const Scene& scene, std::vector<Shape> shapes, bool coup
     throw SceneError(scene.file +
                      ": dem.buoyancy_fluid_density: only for DEM-only scenes; in a coupled run "
                      "the fluid side supplies buoyancy");
-  s.external_loads = coupled || s.params.buoyancy_fluid_density > 0;
+  // The lubrication correction adds its forces through the same fix external.
+  s.external_loads = coupled || s.params.buoyancy_fluid_density > 0 || s.params.lubrication.enabled;
   return s;
 }
 
@@ -208,6 +210,7 @@ void validate_dem_setup(const DemSetup& s) {
         }
   }
   if (!(dem_time_step(s) > 0)) fail(s, "dem.dt: the DEM time step must be positive");
+  check_lubrication_step(s, dem_time_step(s));
 }
 
 double time_step_radius(const Shape& shape, const DemParams& params) {

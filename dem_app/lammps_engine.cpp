@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "dem_app/lammps_input.hpp"
+#include "dem_app/lubrication_setup.hpp"
 #include "dem_app/quaternion.hpp"
 
 namespace lbdem {
@@ -20,9 +21,17 @@ namespace {
 // bigbig), so the signature is deduced from the library's FixExternalFnPtr.
 template <class Context, class Step, class Tag>
 void external_callback(void* ptr, Step, int nlocal, Tag* tags, double**, double** fext) {
-  const auto* ctx = static_cast<const Context*>(ptr);
+  auto* ctx = static_cast<Context*>(ptr);
   auto** torque = static_cast<double**>(lammps_extract_atom(ctx->lmp, "torque"));
   ctx->loads->apply(nlocal, tags, fext, torque);
+  if (!ctx->lubrication) return;
+  // Ghosts too: a pair may straddle ranks or a periodic boundary.
+  const int nall = nlocal + lammps_extract_setting(ctx->lmp, "nghost");
+  const auto* all_tags = static_cast<const Tag*>(lammps_extract_atom(ctx->lmp, "id"));
+  ctx->tags.assign(all_tags, all_tags + nall);
+  ctx->lubrication->apply({nlocal, nall, ctx->tags.data(),
+                           static_cast<double**>(lammps_extract_atom(ctx->lmp, "x")),
+                           static_cast<double**>(lammps_extract_atom(ctx->lmp, "v")), fext});
 }
 
 template <class Context, class Step, class Tag>
@@ -59,7 +68,9 @@ LammpsEngine::LammpsEngine(MPI_Comm comm, DemSetup setup) : setup_(std::move(set
   MPI_Comm_rank(comm_, &rank_);
   contact_ = make_contact_model(setup_.params.material, setup_.file);
   dt_ = dem_time_step(setup_);
+  const std::vector<Shape> scene_shapes = setup_.shapes;
   for (auto& sh : setup_.shapes) sh.clump = clump_for_lammps(sh.clump);
+  lubrication_ = make_lubrication(setup_, scene_shapes, setup_.shapes);
   for (const auto& b : setup_.bodies)
     mass_.push_back(b.density * setup_.shapes[static_cast<size_t>(b.shape)].mass.volume);
   build();
@@ -105,7 +116,7 @@ void LammpsEngine::build() {
     std::vector<int> body_shape;
     for (const auto& b : setup_.bodies) body_shape.push_back(b.shape);
     loads_ = ExternalLoads(setup_.shapes, body_shape);
-    callback_ = {lmp_, &loads_};
+    callback_ = {lmp_, &loads_, lubrication_.enabled() ? &lubrication_ : nullptr, {}};
     // Buoyancy for DEM-only runs: -rho_f V g on every body, known to every rank.
     const double rho_f = setup_.params.buoyancy_fluid_density;
     if (rho_f > 0)

@@ -21,6 +21,7 @@
 #include "dem_app/contact_model.hpp"
 #include "dem_app/dem_setup.hpp"
 #include "dem_app/external_load.hpp"
+#include "dem_app/lubrication.hpp"
 
 namespace lbdem {
 
@@ -58,6 +59,8 @@ class LammpsEngine {
   // The force and torque that will be imposed on a body (known on every rank after run()).
   Eigen::Vector3d imposed_force(std::int64_t id) const { return loads_.force(id); }
   Eigen::Vector3d imposed_torque(std::int64_t id) const { return loads_.torque(id); }
+  // The sub-grid lubrication correction (docs/lubrication.md); disabled unless the scene asks.
+  const Lubrication& lubrication() const { return lubrication_; }
 
   // Advances n DEM steps (collective).
   void run(long substeps);
@@ -87,9 +90,12 @@ class LammpsEngine {
   std::vector<double> mass_;
   std::vector<Eigen::Quaterniond> offset_;  // q_lammps(0)^-1 q_user(0) per body
   ExternalLoads loads_;
+  Lubrication lubrication_;
   struct CallbackContext {
     void* lmp = nullptr;
     ExternalLoads* loads = nullptr;
+    Lubrication* lubrication = nullptr;  // null when disabled
+    std::vector<std::int64_t> tags;      // scratch: local and ghost tags as 64 bit
   } callback_;
   struct PendingLoad {
     std::int64_t id;

@@ -124,6 +124,9 @@ std::vector<std::string> lammps_setup_commands(const DemSetup& setup, double dt,
   for (const auto& b : setup.bodies)
     extent = std::max(extent, clump_extent(setup.shapes[static_cast<size_t>(b.shape)]));
   const double skin = p.neighbor_skin > 0 ? p.neighbor_skin : 0.5 * largest_sphere_radius(setup);
+  // The lubrication correction pairs clump spheres up to h_c apart from ghosts too.
+  if (p.lubrication.enabled)
+    extent = std::max(extent, 2 * largest_sphere_radius(setup) + p.lubrication.cutoff);
   s = precise();
   // Ghost atoms must reach a whole body (rigid/small checks extent <= ghost cutoff).
   s << "comm_modify vel yes cutoff " << extent + skin;

@@ -31,6 +31,25 @@ DemMaterial parse_material(Section& s) {
   return m;
 }
 
+DemLubrication parse_lubrication(Section& s) {
+  DemLubrication l;
+  l.enabled = s.get<bool>("enabled", false, "add the sub-grid squeeze-film correction");
+  l.cutoff = s.get<double>("cutoff", 0.0, "cut-off gap h_c in m (0: cutoff_cells x fluid.dx)",
+                           Bounds::non_negative());
+  l.cutoff_cells =
+      s.get<double>("cutoff_cells", 1.0, "cut-off gap h_c in lattice cells", Bounds::positive());
+  l.min_gap = s.get<double>("min_gap", 0.0,
+                            "minimum gap h_min in m (roughness); the force saturates below it",
+                            Bounds::non_negative());
+  l.viscosity = s.get<double>("viscosity", 0.0,
+                              "dynamic viscosity in Pa s (0: fluid.density x fluid.viscosity)",
+                              Bounds::non_negative());
+  s.finish();  // unknown keys first: a misspelt min_gap should be named as such
+  if (l.enabled && !(l.min_gap > 0))
+    s.fail("min_gap", "a positive minimum gap (m) is required when lubrication is enabled");
+  return l;
+}
+
 }  // namespace
 
 DemParams parse_dem(Section& s) {
@@ -93,8 +112,28 @@ DemParams parse_dem(Section& s) {
     p.output.directory = o->get<std::string>("directory", ".", "output directory");
     o->finish();
   }
+  if (auto l = s.optional_section("lubrication", "sub-grid lubrication correction"))
+    p.lubrication = parse_lubrication(*l);
   s.finish();
   return p;
+}
+
+void resolve_lubrication(DemLubrication& l, const FluidParams* fluid, const std::string& file) {
+  if (!l.enabled) return;
+  const std::string where = file + ": dem.lubrication.";
+  if (l.viscosity == 0) {
+    if (!fluid)
+      throw SceneError(where + "viscosity: required (Pa s) when the scene has no fluid section");
+    l.viscosity = fluid->density * fluid->viscosity;
+  }
+  if (l.cutoff == 0) {
+    if (!fluid)
+      throw SceneError(where + "cutoff: required (m) when the scene has no fluid section");
+    l.cutoff = l.cutoff_cells * fluid->dx;
+  }
+  if (!(l.min_gap < l.cutoff))
+    throw SceneError(where + "min_gap: must be below the cut-off gap " + std::to_string(l.cutoff) +
+                     " m");
 }
 
 }  // namespace lbdem

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "coupler_lib/scene/fluid_section.hpp"
 #include "coupler_lib/scene/yaml_reader.hpp"
 
 namespace lbdem {
@@ -32,6 +33,17 @@ struct DemOutput {
   std::string directory = ".";
 };
 
+// Lubrication correction below the grid scale (docs/lubrication.md): the squeeze-film force
+// between clump spheres of different bodies, and between a clump sphere and a plane wall, minus
+// its value at the cut-off gap, saturated at the minimum gap.
+struct DemLubrication {
+  bool enabled = false;
+  double cutoff = 0;          // m, h_c; 0: cutoff_cells x fluid.dx
+  double cutoff_cells = 1.0;  // h_c in lattice cells when cutoff is 0
+  double min_gap = 0;         // m, h_min (surface roughness); required when enabled
+  double viscosity = 0;       // Pa s, dynamic; 0: fluid.density x fluid.viscosity
+};
+
 struct DemParams {
   std::array<double, 3> gravity{0, 0, -9.81};  // m/s^2
   double buoyancy_fluid_density = 0;           // kg/m^3; DEM-only runs: -rho_f V g per body
@@ -48,9 +60,14 @@ struct DemParams {
   std::vector<DemWall> walls;
   double neighbor_skin = 0;  // m; 0 = half the largest clump-sphere radius
   DemOutput output;
+  DemLubrication lubrication;
 };
 
 DemParams parse_dem(Section& s);
+
+// Resolves dem.lubrication's cutoff and viscosity from the fluid section (both programs call it
+// through parse_scene, so both refuse the same scenes); throws SceneError naming the key.
+void resolve_lubrication(DemLubrication& l, const FluidParams* fluid, const std::string& file);
 
 // "x", "y" or "z" for an axis index.
 const char* axis_name(int axis);

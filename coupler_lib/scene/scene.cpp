@@ -42,6 +42,7 @@ Scene parse_scene(Section root, std::uint64_t hash) {
   root.finish();
   if (!sc.fluid && !sc.dem)
     throw SceneError(sc.file + ": the scene has neither a 'fluid' nor a 'dem' section");
+  if (sc.dem) resolve_lubrication(sc.dem->lubrication, sc.fluid ? &*sc.fluid : nullptr, sc.file);
   return sc;
 }
 

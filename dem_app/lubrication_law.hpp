@@ -1,0 +1,40 @@
+#pragma once
+// The squeeze-film (lubrication) resistance between two spheres, or a sphere and a plane, that
+// a lattice cannot resolve once the gap is below about one cell (docs/lubrication.md).
+//
+// Near contact, the force resisting the relative normal motion U of two spheres of radii a1, a2
+// at surface gap h is F = 6 pi mu a1 U lambda(h), with the two singular terms of the exact
+// solution (Jeffrey & Onishi 1984, their X^A_11; Brenner 1961 and Cooley & O'Neill 1969 for the
+// sphere-plane limit):
+//   lambda(h) = g1 a1 / h + g2 ln(a1 / h) + O(1),
+//   g1 = beta^2 / (1 + beta)^2,  g2 = beta (1 + 7 beta + beta^2) / (5 (1 + beta)^3),
+// beta = a2 / a1. Equal spheres: g1 = 1/4, g2 = 9/40; a plane (beta -> infinity): g1 = 1,
+// g2 = 1/5. The O(1) term is left out: it cancels in the correction below.
+//
+// The correction adds only what the lattice misses: lambda(max(h, h_min)) - lambda(h_c) for
+// h < h_c, zero beyond (Nguyen & Ladd 2002; Kempe & Froehlich 2012). It is continuous at h_c,
+// positive below it, and finite at contact and overlap (saturated at the roughness h_min).
+
+namespace lbdem {
+
+struct LubricationLaw {
+  double viscosity = 0;  // mu, Pa s
+  double cutoff = 0;     // h_c, m
+  double min_gap = 0;    // h_min, m
+};
+
+// Coefficients g1, g2 of lambda for radii a1 (the sphere the force acts on) and a2; a2 <= 0
+// stands for a plane wall.
+struct SqueezeCoefficients {
+  double g1 = 0, g2 = 0;
+};
+SqueezeCoefficients squeeze_coefficients(double a1, double a2);
+
+// lambda(h) of the two singular terms (dimensionless), h > 0.
+double squeeze_lambda(const SqueezeCoefficients& g, double a1, double h);
+
+// The correction's resistance c in N s/m: the force on sphere 1 is -c (v1 - v2) . n n, with n
+// the unit normal from sphere 1 towards sphere 2 (or the wall). Zero for gap >= h_c.
+double lubrication_resistance(const LubricationLaw& law, double a1, double a2, double gap);
+
+}  // namespace lbdem

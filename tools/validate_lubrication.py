@@ -1,0 +1,195 @@
+#!/usr/bin/env python3
+"""Validation of the sub-grid lubrication correction in coupled runs (docs/lubrication.md).
+
+    validate_lubrication.py approach --build build --scene S [--ranks 1:1] [--tolerance T]
+    validate_lubrication.py bounce --build build --scene S [S ...] [--without] [--tolerance T]
+
+approach: one sphere driven towards the lower wall (one body) or two equal spheres driven
+towards each other along z (two bodies), at constant speed. Reads the body trace, and for each
+recorded gap h compares the lattice's normal force (lambda = F / (6 pi mu a U)) and the lattice
+force plus the correction with Brenner's (1961) exact series. Prints a table over h / a, the
+largest relative error of both over max(a/20, dx/4) <= h <= a, also for other cut-offs h_c, appends a
+row to runs/validation/results.csv and exits 1 when the corrected error exceeds the tolerance.
+"""
+import argparse
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "analysis"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import coupled_case  # noqa: E402
+import lubrication_reference as ref  # noqa: E402
+import validate_case  # noqa: E402
+import yaml  # noqa: E402
+
+
+def approach_samples(scene, bodies):
+    """[(h, lambda_lattice)] from the trace; U, a, wall."""
+    s, _ = coupled_case.scene_info(scene)
+    a = 0.5 * s["shapes"][0]["diameter"]
+    f = s["fluid"]
+    mu = f["density"] * f["viscosity"]
+    dt = (f["tau"] - 0.5) / 3 * f["dx"] ** 2 / f["viscosity"]
+    wall = len(bodies) == 1
+    u = abs(s["bodies"][0]["velocity"][2])
+    out = []
+    rows = zip(*[bodies[i] for i in sorted(bodies)])
+    for r in rows:
+        if r[0]["time"] == 0:
+            continue
+        # The load of a row was computed by the fluid from the state one step earlier.
+        if wall:
+            h = r[0]["z"] + u * dt - a
+            force = r[0]["fz"]
+        else:
+            h = r[1]["z"] - r[0]["z"] - 2 * a - 2 * u * dt
+            force = 0.5 * (r[1]["fz"] - r[0]["fz"])
+        out.append((h, force / (6 * math.pi * mu * a * u)))
+    return out, a, wall, f["dx"]
+
+
+def cmd_approach(args):
+    wall_s = 0.0
+    if not args.no_run:
+        wall_s, _ = coupled_case.run(args.build, args.scene, *map(int, args.ranks.split(":")))
+    _, trace = coupled_case.scene_info(args.scene)
+    samples, a, wall, dx = approach_samples(args.scene, coupled_case.read_trace(trace))
+    s, _ = coupled_case.scene_info(args.scene)
+    lub = s["dem"]["lubrication"]
+    h_min = lub["min_gap"]
+    h_c = lub.get("cutoff") or lub.get("cutoff_cells", 1.0) * dx
+    brenner = ref.brenner_wall if wall else ref.brenner_pair
+    name = validate_case.case_name(args)
+
+    def at(h_over_a):
+        return min(samples, key=lambda x: abs(x[0] / a - h_over_a))
+
+    print(f"{name}: {'sphere-wall' if wall else 'sphere-sphere'}, d/dx = {2 * a / dx:.3g}, "
+          f"h_c = {h_c / dx:.3g} cells, h_min = {h_min / a:.3g} a")
+    print(f"{'h/a':>7} {'h/dx':>7} {'Brenner':>9} {'lattice/B':>10} {'+corr/B':>9}")
+    for target in (2.0, 1.0, 0.5, 0.25, 0.125, 0.0625):
+        h, lam = at(target)
+        if abs(h / a - target) > 0.1 * target:
+            continue
+        b = brenner(h, a)
+        c = ref.correction(h, a, h_c, h_min, wall)
+        print(f"{h / a:7.4f} {h / dx:7.3f} {b:9.4g} {lam / b:10.4f} {(lam + c) / b:9.4f}")
+
+    # Below about a quarter cell the sphere's smoothed band reaches the wall's (or the other
+    # sphere's) first nodes and the lattice force is no longer a squeeze force (it reverses);
+    # the comparison stops there.
+    reversed_at = [h for h, lam in samples if lam < 0]
+    if reversed_at:
+        print(f"the lattice force reverses below h = {max(reversed_at) / dx:.3g} cells "
+              f"({max(reversed_at) / a:.3g} a)")
+    lowest = max(a / 20, dx / 4)
+    window = [(h, lam) for h, lam in samples if lowest <= h <= a]
+
+    def worst(cutoff):
+        return max(abs((lam + (ref.correction(h, a, cutoff, h_min, wall) if cutoff else 0)) /
+                       brenner(h, a) - 1) for h, lam in window)
+
+    without = worst(0)
+    print(f"largest |F/F_Brenner - 1| over {lowest / a:.3g} a <= h <= a: lattice alone "
+          f"{100 * without:.1f} %")
+    for cells in (0.5, 0.75, 1.0, 1.25, 1.5, 2.0):
+        print(f"  with the correction, h_c = {cells:.3g} cells: {100 * worst(cells * dx):.1f} %")
+    error = worst(h_c)
+    ranks = args.ranks.replace(":", "/")
+    validate_case.append_row(name, f"{2 * a / dx:.3g}", s["fluid"]["tau"],
+                             "max |F/F_Brenner-1| lattice only", 0, f"{without:.4g}",
+                             f"{without:.4g}", wall_s, ranks)
+    validate_case.append_row(name, f"{2 * a / dx:.3g}", s["fluid"]["tau"],
+                             "max |F/F_Brenner-1| with correction", 0, f"{error:.4g}",
+                             f"{error:.4g}", wall_s, ranks)
+    print(f"{name}: with the correction (h_c = {h_c / dx:.3g} cells) the largest error is "
+          f"{100 * error:.2f} %, lattice alone {100 * without:.2f} %; wall time {wall_s:.1f} s")
+    if error > args.tolerance:
+        print(f"FAILED: error {100 * error:.2f} % above the tolerance {100 * args.tolerance:.2f} %")
+        return 1
+    return 0
+
+
+def scene_without_correction(scene):
+    """A copy of the scene with dem.lubrication.enabled false, in runs/lubrication/<name>_off."""
+    with open(scene) as f:
+        s = yaml.safe_load(f)
+    s["name"] = s["name"] + "_off"
+    s["dem"]["lubrication"]["enabled"] = False
+    directory = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "runs",
+                             "lubrication", s["name"])
+    os.makedirs(directory, exist_ok=True)
+    s["dem"]["output"]["directory"] = "."
+    path = os.path.join(directory, s["name"] + ".yaml")
+    with open(path, "w") as f:
+        yaml.safe_dump(s, f)
+    return path
+
+
+def restitution(scene, rows):
+    """(U_in, U_out, St, e) of the first bounce: U_in the largest downward speed before the
+    first reversal, U_out the largest upward speed after it (0 without a reversal)."""
+    s, _ = coupled_case.scene_info(scene)
+    f = s["fluid"]
+    d = s["shapes"][0]["diameter"]
+    rho_p = s["bodies"][0]["density"]
+    turn = next((i for i in range(1, len(rows)) if rows[i - 1]["vz"] < 0 <= rows[i]["vz"]), None)
+    u_in = max(-r["vz"] for r in rows[:turn])
+    # No reversal: the film stopped the sphere (or the run is too short to tell), e = 0.
+    u_out = max(0.0, max(r["vz"] for r in rows[turn:])) if turn is not None else 0.0
+    st = rho_p * u_in * d / (9 * f["density"] * f["viscosity"])
+    return u_in, u_out, st, u_out / u_in
+
+
+def cmd_bounce(args):
+    failed = 0
+    print(f"{'case':>22} {'St':>8} {'U_in m/s':>10} {'e/e_dry':>8} {'Legendre':>8} {'diff':>7} "
+          f"{'wall s':>7}")
+    for scene in args.scene:
+        runs = [(scene, True)] + ([(scene_without_correction(scene), False)] if args.without
+                                  else [])
+        for path, corrected in runs:
+            wall_s = 0.0
+            if not args.no_run:
+                wall_s, _ = coupled_case.run(args.build, path, *map(int, args.ranks.split(":")))
+            s, trace = coupled_case.scene_info(path)
+            u_in, u_out, st, e = restitution(path, coupled_case.read_trace(trace)[0])
+            e_dry = s["dem"].get("material", {}).get("restitution", 0.9)
+            legendre = math.exp(-35 / st)
+            diff = e / e_dry - legendre
+            print(f"{s['name']:>22} {st:8.1f} {u_in:10.4g} {e / e_dry:8.4f} {legendre:8.4f} "
+                  f"{diff:+7.3f} {wall_s:7.1f}")
+            validate_case.append_row(s["name"], f"{s['shapes'][0]['diameter'] / s['fluid']['dx']:.3g}",
+                                     s["fluid"]["tau"], f"e/e_dry at St {st:.1f}",
+                                     f"{legendre:.4g}", f"{e / e_dry:.4g}",
+                                     f"{abs(diff):.4g}", wall_s, args.ranks.replace(":", "/"))
+            if corrected and abs(diff) > args.tolerance:
+                print(f"FAILED: |e/e_dry - exp(-35/St)| = {abs(diff):.3f} above {args.tolerance}")
+                failed = 1
+    return failed
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    sub = p.add_subparsers(dest="cmd", required=True)
+    q = sub.add_parser("approach")
+    q.add_argument("--build", required=True)
+    q.add_argument("--scene", required=True)
+    q.add_argument("--ranks", default="1:1")
+    q.add_argument("--tolerance", type=float, default=1.0)
+    q.add_argument("--case", help="name for results.csv (default: the scene's name)")
+    q.add_argument("--no-run", action="store_true", help="analyse the existing trace only")
+    b = sub.add_parser("bounce")
+    b.add_argument("--build", required=True)
+    b.add_argument("--scene", required=True, nargs="+")
+    b.add_argument("--ranks", default="1:1")
+    b.add_argument("--tolerance", type=float, default=1.0, help="on |e/e_dry - exp(-35/St)|")
+    b.add_argument("--without", action="store_true", help="also run without the correction")
+    b.add_argument("--no-run", action="store_true", help="analyse the existing traces only")
+    args = p.parse_args()
+    return {"approach": cmd_approach, "bounce": cmd_bounce}[args.cmd](args)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
