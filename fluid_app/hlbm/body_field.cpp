@@ -1,5 +1,7 @@
 #include "fluid_app/hlbm/body_field.hpp"
 
+#include "fluid_app/lattice/d3q19.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -87,6 +89,10 @@ void BodyField<T>::set_pose(Tracked& t, const BodyState& s) const {
                                 " has a degenerate orientation quaternion");
   t.rot = q.normalized().toRotationMatrix();
   t.to_ref = t.rot.transpose() * (dx / shapes_[static_cast<std::size_t>(t.shape)].spacing());
+  // h c_i in lattice units is (h / dx) c_i; mapped by to_ref = rot^T dx / h it is rot^T c_i.
+  for (std::size_t i = 0; i < t.stencil.size(); ++i)
+    t.stencil[i] =
+        t.rot.transpose() * Eigen::Vector3d(d3q19::c[i][0], d3q19::c[i][1], d3q19::c[i][2]);
 }
 
 // Paper, appendix "Representation of a particle in the fluid": the node at minimum-image
@@ -95,7 +101,9 @@ void BodyField<T>::set_pose(Tracked& t, const BodyState& s) const {
 template <class T>
 float BodyField<T>::porosity(const Tracked& t, const Eigen::Vector3d& r) const {
   const ReferencePorosity& ref = shapes_[static_cast<std::size_t>(t.shape)];
-  return static_cast<float>(ref.at(t.to_ref * r + ref.shift(), lookup_));
+  const Eigen::Vector3d p = t.to_ref * r + ref.shift();
+  return static_cast<float>(lookup_ == PorosityLookup::nearest ? ref.nearest(p, t.stencil)
+                                                               : ref.at(p));
 }
 
 // The offsets are the same doubles body_porosity() computes, so every path gives a cell the

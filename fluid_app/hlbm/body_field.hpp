@@ -105,7 +105,9 @@ class BodyField {
     Eigen::Vector3d x = Eigen::Vector3d::Zero();           // centre, lattice coordinates
     Eigen::Matrix3d rot = Eigen::Matrix3d::Identity();     // shape frame -> space frame
     Eigen::Matrix3d to_ref = Eigen::Matrix3d::Identity();  // rot^T dx / h
-    std::vector<BandCell> band;                            // cells with 0 < d < 1
+    // Nearest lookup: the lattice-frame stencil h c_i in reference coordinates (rot^T c_i).
+    std::array<Eigen::Vector3d, 19> stencil;
+    std::vector<BandCell> band;  // cells with 0 < d < 1
     // Q and L of the last step (this rank's cells), for the difference in penalty_loads.
     std::array<double, 3> covered{}, covered_moment{};
   };

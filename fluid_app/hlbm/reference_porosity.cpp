@@ -33,10 +33,12 @@ ReferencePorosity::ReferencePorosity(const Voxels& voxels) : h_(voxels.h) {
   };
 
   smooth_.assign(static_cast<std::size_t>(m_[0]) * m_[1] * m_[2], 1.0f);
+  fluid_.assign(smooth_.size(), 1);
   std::size_t idx = 0;
   for (int k = 0; k < m_[2]; ++k)
     for (int j = 0; j < m_[1]; ++j)
       for (int i = 0; i < m_[0]; ++i, ++idx) {
+        fluid_[idx] = solid(i - kPad, j - kPad, k - kPad) ? 0 : 1;
         int fluid = 0;
         for (const auto& c : d3q19::c)
           fluid += solid(i - kPad + c[0], j - kPad + c[1], k - kPad + c[2]) ? 0 : 1;

@@ -12,15 +12,18 @@
 //   interpolation are both linear and the stencil offsets are whole reference cells, the two
 //   commute exactly: we average once on the reference lattice at construction and a lookup
 //   is one trilinear interpolation (8 loads) instead of 19 of them.
-// * nearest voxel (the paper's construction): each of the 19 stencil points takes the voxel
-//   nearest to it. The stencil offsets are whole voxels, so the nearest voxel of s + h c_i is
-//   the nearest voxel of s shifted by c_i, and the lookup is one load of the averaged
-//   lattice. d changes in steps of 1/19 as the body moves, and the band (0 < d < 1) is
-//   narrower than the trilinear one.
+// * nearest voxel (the paper's construction): each of the 19 D3Q19 stencil points x + h c_i
+//   of the node, taken in the lattice frame and mapped into the shape frame, reads the voxel
+//   nearest to it (19 loads). In the lattice frame the stencil point of a node towards a
+//   neighbour is the neighbour's stencil point towards the node (spacing h = dx / 2), so a
+//   node with d = 0 never neighbours a node with d = 1 and the band holds every boundary
+//   link, at any orientation. d changes in steps of 1/19 as the body moves, and the band
+//   (0 < d < 1) is narrower than the trilinear one.
 #include <Eigen/Dense>
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -40,11 +43,10 @@ class ReferencePorosity {
   // Porosity at a point given in reference-lattice coordinates (see to_reference): 1 off the
   // lattice, 0 deep inside. Exactly 0 or 1 where all 8 interpolation corners are.
   double at(const Eigen::Vector3d& ref) const;
-  // Porosity of the reference voxel nearest to `ref` (the paper's lookup): 1 off the lattice.
-  double nearest(const Eigen::Vector3d& ref) const;
-  double at(const Eigen::Vector3d& ref, PorosityLookup lookup) const {
-    return lookup == PorosityLookup::nearest ? nearest(ref) : at(ref);
-  }
+  // The paper's lookup: the fraction of the 19 points ref + stencil[i] whose nearest voxel is
+  // fluid; stencil[i] is the lattice-frame offset h c_i in reference-lattice coordinates
+  // (R^T c_i). Exactly 0 or 1 when all 19 agree.
+  double nearest(const Eigen::Vector3d& ref, const std::array<Eigen::Vector3d, 19>& stencil) const;
 
   // Reference-lattice coordinates of a shape-frame point p (m): ref = p / h + shift().
   double spacing() const { return h_; }
@@ -59,8 +61,9 @@ class ReferencePorosity {
   static constexpr int kPad = 2;  // one layer for the 19-point stencil, one for trilinear
   double h_ = 0;
   Eigen::Vector3d shift_ = Eigen::Vector3d::Zero();
-  std::array<int, 3> m_{0, 0, 0};  // padded extents
-  std::vector<float> smooth_;      // averaged porosity, padded lattice, x fastest
+  std::array<int, 3> m_{0, 0, 0};    // padded extents
+  std::vector<float> smooth_;        // averaged porosity, padded lattice, x fastest
+  std::vector<std::uint8_t> fluid_;  // 1 where the voxel is fluid, same padded lattice
   double support_radius_ = 0;
   double surface_radius_ = 0;
 
@@ -97,10 +100,21 @@ inline double ReferencePorosity::at(const Eigen::Vector3d& ref) const {
   return detail::lerp(detail::lerp(c00, c10, ty), detail::lerp(c01, c11, ty), tz);
 }
 
-inline double ReferencePorosity::nearest(const Eigen::Vector3d& ref) const {
-  const double x = ref.x() + 0.5, y = ref.y() + 0.5, z = ref.z() + 0.5;
-  if (!(x >= 0 && y >= 0 && z >= 0 && x < m_[0] && y < m_[1] && z < m_[2])) return 1.0;
-  return value(static_cast<int>(x), static_cast<int>(y), static_cast<int>(z));
+inline double ReferencePorosity::nearest(const Eigen::Vector3d& ref,
+                                         const std::array<Eigen::Vector3d, 19>& stencil) const {
+  int fluid = 0;
+  for (const Eigen::Vector3d& o : stencil) {
+    const double x = ref.x() + o.x() + 0.5, y = ref.y() + o.y() + 0.5, z = ref.z() + o.z() + 0.5;
+    if (!(x >= 0 && y >= 0 && z >= 0 && x < m_[0] && y < m_[1] && z < m_[2])) {
+      ++fluid;  // off the lattice: fluid
+      continue;
+    }
+    const std::size_t i = static_cast<std::size_t>(x), j = static_cast<std::size_t>(y),
+                      k = static_cast<std::size_t>(z);
+    fluid +=
+        fluid_[i + static_cast<std::size_t>(m_[0]) * (j + static_cast<std::size_t>(m_[1]) * k)];
+  }
+  return static_cast<float>(fluid) / 19.0f;  // as the averaged lattice: exactly 0 or 1 at the ends
 }
 
 }  // namespace lbdem::hlbm
