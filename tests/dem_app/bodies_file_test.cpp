@@ -10,7 +10,7 @@
 
 #include "coupler_lib/scene/scene.hpp"
 #include "dem_app/dem_setup.hpp"
-#include "dem_app/scene_shapes.hpp"
+#include "coupler_lib/scene/shape_catalogue.hpp"
 
 namespace lbdem {
 namespace {
