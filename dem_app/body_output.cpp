@@ -5,44 +5,31 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <sstream>
 #include <stdexcept>
+
+#include "coupler_lib/output/atomic_file.hpp"
+#include "coupler_lib/output/gather.hpp"
+#include "coupler_lib/output/hdf5_handle.hpp"
 
 namespace lbdem {
 
 std::vector<BodyState> gather_states(const std::vector<BodyState>& mine, MPI_Comm comm) {
-  int rank = 0, size = 1;
-  MPI_Comm_rank(comm, &rank);
-  MPI_Comm_size(comm, &size);
-  const int bytes = static_cast<int>(mine.size() * sizeof(BodyState));
-  std::vector<int> counts(static_cast<size_t>(size)), displs(static_cast<size_t>(size));
-  MPI_Gather(&bytes, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
-  long total = 0;
-  for (int r = 0; r < size; ++r) {
-    displs[static_cast<size_t>(r)] = static_cast<int>(total);
-    total += counts[static_cast<size_t>(r)];
-  }
-  std::vector<BodyState> all(rank == 0 ? static_cast<size_t>(total) / sizeof(BodyState) : 0);
-  MPI_Gatherv(mine.data(), bytes, MPI_BYTE, all.data(), counts.data(), displs.data(), MPI_BYTE, 0,
-              comm);
+  std::vector<BodyState> all = gather_to_root(std::span<const BodyState>(mine), comm);
   std::sort(all.begin(), all.end(), [](const auto& a, const auto& b) { return a.id < b.id; });
   return all;
 }
 
 namespace {
 
-void check(herr_t status, const std::string& what) {
-  if (status < 0) throw std::runtime_error("HDF5: cannot " + what);
-}
-
 void write_dataset(hid_t group, const char* name, hid_t type, const void* data, hsize_t rows,
                    hsize_t cols) {
   const hsize_t dims[2] = {rows, cols};
-  const hid_t space = H5Screate_simple(cols == 1 ? 1 : 2, dims, nullptr);
-  const hid_t set = H5Dcreate2(group, name, type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-  if (set < 0) throw std::runtime_error(std::string("HDF5: cannot create dataset ") + name);
-  check(H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), std::string("write ") + name);
-  H5Dclose(set);
-  H5Sclose(space);
+  const H5Handle space(H5Screate_simple(cols == 1 ? 1 : 2, dims, nullptr), H5Sclose,
+                       std::string("dataspace of ") + name);
+  const H5Handle set(H5Dcreate2(group, name, type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                     H5Dclose, std::string("create dataset ") + name);
+  h5_check(H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), std::string("write ") + name);
 }
 
 std::string group_name(int index) {
@@ -62,13 +49,9 @@ BodySnapshotWriter::BodySnapshotWriter(const std::string& directory, const std::
   xdmf_path_ = (std::filesystem::path(directory) / (name + "_bodies.xdmf")).string();
   if (rank_ == 0) {
     std::filesystem::create_directories(directory);
-    file_ = H5Fcreate(h5_path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-    if (file_ < 0) throw std::runtime_error("cannot create " + h5_path_);
+    file_ = H5Handle(H5Fcreate(h5_path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose,
+                     "create " + h5_path_);
   }
-}
-
-BodySnapshotWriter::~BodySnapshotWriter() {
-  if (file_ >= 0) H5Fclose(file_);
 }
 
 void BodySnapshotWriter::write(const std::vector<BodyState>& owned, double time) {
@@ -97,8 +80,8 @@ void BodySnapshotWriter::write(const std::vector<BodyState>& owned, double time)
       shape.push_back(s.shape);
     }
     const std::string g = group_name(count_);
-    const hid_t group = H5Gcreate2(file_, g.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    if (group < 0) throw std::runtime_error("HDF5: cannot create group " + g);
+    const H5Handle group(H5Gcreate2(file_, g.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                         H5Gclose, "create group " + g);
     write_dataset(group, "position", H5T_NATIVE_DOUBLE, pos.data(), n, 3);
     write_dataset(group, "orientation", H5T_NATIVE_DOUBLE, quat.data(), n, 4);
     write_dataset(group, "velocity", H5T_NATIVE_DOUBLE, vel.data(), n, 3);
@@ -109,14 +92,8 @@ void BodySnapshotWriter::write(const std::vector<BodyState>& owned, double time)
     write_dataset(group, "rotation", H5T_NATIVE_DOUBLE, rot.data(), n, 9);
     write_dataset(group, "id", H5T_NATIVE_LLONG, id.data(), n, 1);
     write_dataset(group, "shape", H5T_NATIVE_INT, shape.data(), n, 1);
-    const hid_t space = H5Screate(H5S_SCALAR);
-    const hid_t attr =
-        H5Acreate2(group, "time", H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT);
-    check(H5Awrite(attr, H5T_NATIVE_DOUBLE, &time), "write the time attribute");
-    H5Aclose(attr);
-    H5Sclose(space);
-    H5Gclose(group);
-    check(H5Fflush(file_, H5F_SCOPE_GLOBAL), "flush " + h5_path_);
+    write_attribute(group, "time", time);
+    h5_check(H5Fflush(file_, H5F_SCOPE_GLOBAL), "flush " + h5_path_);
     times_.push_back(time);
     sizes_.push_back(static_cast<long>(n));
     write_xdmf();
@@ -126,9 +103,8 @@ void BodySnapshotWriter::write(const std::vector<BodyState>& owned, double time)
 
 void BodySnapshotWriter::write_xdmf() const {
   // Rewritten whole after each snapshot, so a partial run is always readable.
-  const std::string tmp = xdmf_path_ + ".tmp";
+  std::ostringstream x;
   {
-    std::ofstream x(tmp);
     x << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
       << "  <Grid Name=\"bodies\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
     for (size_t k = 0; k < times_.size(); ++k) {
@@ -167,7 +143,7 @@ void BodySnapshotWriter::write_xdmf() const {
     }
     x << "  </Grid>\n </Domain>\n</Xdmf>\n";
   }
-  std::filesystem::rename(tmp, xdmf_path_);
+  write_file_atomically(xdmf_path_, x.str());
 }
 
 EnergySeries::EnergySeries(const std::string& path, MPI_Comm comm) : path_(path) {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "coupler_lib/coupling/packets.hpp"
+#include "coupler_lib/output/hdf5_handle.hpp"
 #include "dem_app/lammps_engine.hpp"
 
 namespace lbdem {
@@ -23,7 +24,6 @@ class BodySnapshotWriter {
  public:
   // Files: <directory>/<name>_bodies.h5 and <name>_bodies.xdmf (rank 0 only).
   BodySnapshotWriter(const std::string& directory, const std::string& name, MPI_Comm comm);
-  ~BodySnapshotWriter();
   BodySnapshotWriter(const BodySnapshotWriter&) = delete;
   BodySnapshotWriter& operator=(const BodySnapshotWriter&) = delete;
 
@@ -39,7 +39,7 @@ class BodySnapshotWriter {
   MPI_Comm comm_;
   int rank_ = 0;
   std::string h5_path_, xdmf_path_, h5_name_;
-  hid_t file_ = -1;
+  H5Handle file_;  // rank 0 only
   int count_ = 0;
   std::vector<double> times_;
   std::vector<long> sizes_;

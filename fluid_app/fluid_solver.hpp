@@ -25,7 +25,7 @@
 namespace lbdem {
 
 // Mean fluid velocity over the whole domain, weighted by porosity d (1 in fluid) and density:
-// u_mean = sum(d rho u*) / sum(d rho), u* the physical velocity (paper, Eq. physicalVelocity).
+// u_mean = sum(d rho u*) / sum(d rho), u* the physical velocity (docs/method.md Eq. (6)).
 // Sums are exact (fixed point) so the result does not depend on the rank count.
 struct MeanFlow {
   std::array<double, 3> velocity{};  // lattice units
@@ -60,7 +60,7 @@ class FluidSolver {
   T population(int i, CellIndex cell) const;
   T density(CellIndex cell) const;  // interior cells
   // Physical velocity u* = v + F/(2 rho) + (1-d)(u_p - v)/2 with the current force and
-  // porous field (paper, Eq. physicalVelocity). Interior cells.
+  // porous field (docs/method.md Eq. (6)). Interior cells.
   std::array<T, 3> velocity(CellIndex cell) const;
   // Density and physical velocity of all interior cells, x fastest; u interleaved (3 per cell).
   void macroscopic(std::vector<T>& rho, std::vector<T>& u) const;

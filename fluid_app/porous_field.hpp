@@ -3,7 +3,7 @@
 //
 // The HLBM part fills these arrays; the fluid kernel turns them into a velocity shift through
 // the same exact-difference (Kupershtokh) step that carries the uniform body force
-// (paper appendix, Eq. forcedShift):
+// (docs/method.md Eqs. (4)-(5)):
 //   u+ = v + dt F / rho + (1 - d) (u_p - v),   u_p = v_b + omega_b x minimum_image(x - x_c).
 //
 // Contract for the filler (all values in LATTICE units, see UnitConverter):

@@ -1,6 +1,6 @@
 // clump_gen: shape (analytic or STL) -> multi-sphere clump file, with its shape errors.
 // Also exports the analytic shapes as STL (the shipped configs/shapes/*.stl come from here).
-// See the README for the methods, the file format and the measured errors.
+// See docs/user-guide.md ("Clump generator") for the methods, the file format and the measured errors.
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>

@@ -63,6 +63,9 @@ StartOutcome start_up(AppContext& ctx, int argc, char** argv) {
   if (ctx.cli.help || ctx.cli.version) return {Start::stop, "", false};
   try {
     ctx.scene = load_scene(ctx.cli.scene);
+    ctx.scene_file = ctx.cli.scene;
+    ctx.scene_hash = ctx.scene.hash;
+    ctx.coupling = ctx.scene.coupling;
   } catch (const std::exception& e) {
     return {Start::fail, e.what(), false};
   }
@@ -84,6 +87,8 @@ int run_app(int argc, char** argv, const AppInfo& info,
   MPI_Init(&argc, &argv);
   AppContext ctx;
   ctx.info = info;
+  ctx.side = info.side;
+  ctx.program = info.program;
   MPI_Comm_rank(MPI_COMM_WORLD, &ctx.world_rank);
   appnum(ctx.app, ctx.app_count);
   MPI_Comm_split(MPI_COMM_WORLD, ctx.app, ctx.world_rank, &ctx.side_comm);

@@ -22,6 +22,8 @@
 
 #include "coupler_lib/app/command_line.hpp"
 #include "coupler_lib/app/logging.hpp"
+#include "coupler_lib/coupling/side_info.hpp"
+#include "coupler_lib/errors.hpp"
 #include "coupler_lib/scene/scene.hpp"
 
 namespace lbdem {
@@ -32,29 +34,12 @@ struct AppInfo {
   std::string description;  // one line for --help
 };
 
-struct AppContext {
+// The program's side of the world (ranks, names, scene hash, coupling keys) plus what only
+// the programs themselves read: the command line and the whole scene.
+struct AppContext : SideInfo {
   AppInfo info;
   CommandLine cli;
   Scene scene;
-  MPI_Comm side_comm = MPI_COMM_NULL;  // the ranks of this binary
-  int rank = 0;                        // rank within side_comm
-  int size = 1;
-  int world_rank = 0;
-  int app = 0;        // this binary's index in the MPMD launch (MPI_APPNUM)
-  int app_count = 1;  // number of applications in the MPMD launch
-  std::shared_ptr<spdlog::logger> log;
-};
-
-// An error that every rank of both binaries detects identically (same message).
-class JobError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
-// An error that every rank of one binary detects identically.
-class SideError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
 };
 
 // `check` prints derived parameters for --check; `run` does the work. Both may throw.

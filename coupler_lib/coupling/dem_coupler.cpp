@@ -7,6 +7,7 @@
 #include "coupler_lib/coupling/live_transport.hpp"
 #include "coupler_lib/coupling/reduce.hpp"
 #include "coupler_lib/coupling/replay_transport.hpp"
+#include "coupler_lib/errors.hpp"
 
 namespace lbdem {
 
@@ -23,7 +24,7 @@ DemCoupler::DemCoupler(const World& world, const Scene& scene)
   }
 }
 
-DemCoupler::DemCoupler(const AppContext& ctx, const std::string& recording)
+DemCoupler::DemCoupler(const SideInfo& ctx, const std::string& recording)
     : DemCoupler(ctx.side_comm, std::make_unique<ReplayDemTransport>(ctx, recording)) {}
 
 DemCoupler::DemCoupler(MPI_Comm side, std::unique_ptr<DemTransport> transport)

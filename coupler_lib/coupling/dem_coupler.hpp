@@ -18,13 +18,14 @@
 #include <span>
 #include <vector>
 
-#include "coupler_lib/app/run_app.hpp"
 #include "coupler_lib/coupling/coupling_times.hpp"
 #include "coupler_lib/coupling/packets.hpp"
 #include "coupler_lib/coupling/recorder.hpp"
 #include "coupler_lib/coupling/routing.hpp"
+#include "coupler_lib/coupling/side_info.hpp"
 #include "coupler_lib/coupling/transport.hpp"
 #include "coupler_lib/coupling/world.hpp"
+#include "coupler_lib/scene/scene.hpp"
 
 namespace lbdem {
 
@@ -33,7 +34,7 @@ class DemCoupler {
   // Live. Collective over both programs (the fluid side constructs its FluidCoupler).
   DemCoupler(const World& world, const Scene& scene);
   // Replay from a recording. Collective over the DEM ranks.
-  DemCoupler(const AppContext& ctx, const std::string& recording);
+  DemCoupler(const SideInfo& ctx, const std::string& recording);
   ~DemCoupler();
 
   // Collective over both programs (live) or over the DEM ranks (replay).

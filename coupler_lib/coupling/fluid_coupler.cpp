@@ -7,6 +7,7 @@
 #include "coupler_lib/coupling/live_transport.hpp"
 #include "coupler_lib/coupling/reduce.hpp"
 #include "coupler_lib/coupling/replay_transport.hpp"
+#include "coupler_lib/errors.hpp"
 
 namespace lbdem {
 
@@ -18,7 +19,7 @@ double stencil_margin(const Scene& scene) {
 FluidCoupler::FluidCoupler(const World& world, const FluidGeometry& geometry)
     : FluidCoupler(world.side(), std::make_unique<LiveFluidTransport>(world), geometry) {}
 
-FluidCoupler::FluidCoupler(const AppContext& ctx, const std::string& recording,
+FluidCoupler::FluidCoupler(const SideInfo& ctx, const std::string& recording,
                            const FluidGeometry& geometry)
     : FluidCoupler(ctx.side_comm, std::make_unique<ReplayFluidTransport>(ctx, recording),
                    geometry) {}

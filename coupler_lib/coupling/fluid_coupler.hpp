@@ -22,12 +22,13 @@
 #include <unordered_map>
 #include <vector>
 
-#include "coupler_lib/app/run_app.hpp"
 #include "coupler_lib/coupling/coupling_times.hpp"
 #include "coupler_lib/coupling/packets.hpp"
 #include "coupler_lib/coupling/routing.hpp"
+#include "coupler_lib/coupling/side_info.hpp"
 #include "coupler_lib/coupling/transport.hpp"
 #include "coupler_lib/coupling/world.hpp"
+#include "coupler_lib/scene/scene.hpp"
 
 namespace lbdem {
 
@@ -48,7 +49,7 @@ class FluidCoupler {
   // Live. Collective over both programs (the DEM side constructs its DemCoupler).
   FluidCoupler(const World& world, const FluidGeometry& geometry);
   // Replay from a recording. Collective over the fluid ranks.
-  FluidCoupler(const AppContext& ctx, const std::string& recording, const FluidGeometry& geometry);
+  FluidCoupler(const SideInfo& ctx, const std::string& recording, const FluidGeometry& geometry);
   ~FluidCoupler();
 
   std::vector<BodyState> receive_states(std::int64_t step);

@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "coupler_lib/output/hdf5_handle.hpp"
+
 namespace lbdem {
 
 namespace {
@@ -28,21 +30,8 @@ hid_t check(hid_t id, const std::string& path, const std::string& what) {
   return id;
 }
 
-// Closes an HDF5 handle at scope exit.
-class Handle {
- public:
-  Handle(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
-  ~Handle() {
-    if (id_ >= 0) close_(id_);
-  }
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  operator hid_t() const { return id_; }
-
- private:
-  hid_t id_;
-  herr_t (*close_)(hid_t);
-};
+// Closes an HDF5 handle at scope exit (the project's one handle type).
+using Handle = H5Handle;
 
 hid_t array_of(hid_t base, hsize_t n) {
   return H5Tarray_create2(base, 1, &n);

@@ -7,6 +7,7 @@
 
 #include "coupler_lib/coupling/compare.hpp"
 #include "coupler_lib/coupling/reduce.hpp"
+#include "coupler_lib/errors.hpp"
 #include "coupler_lib/output/gather.hpp"
 
 namespace lbdem {
@@ -28,7 +29,7 @@ std::vector<Packet> flatten(const std::vector<std::vector<Packet>>& parts) {
 
 }  // namespace
 
-ReplaySource::ReplaySource(const AppContext& ctx, const std::string& path)
+ReplaySource::ReplaySource(const SideInfo& ctx, const std::string& path)
     : path_(path), side_(ctx.side_comm), rank_(ctx.rank), size_(ctx.size), log_(ctx.log) {
   // Only rank 0 touches the file; an error there ends the job with one message while the
   // other ranks wait in the broadcast below.
@@ -38,10 +39,10 @@ ReplaySource::ReplaySource(const AppContext& ctx, const std::string& path)
   if (rank_ == 0) {
     reader_ = std::make_unique<RecordingReader>(path);
     const RecordingInfo& in = reader_->info();
-    if (in.scene_hash != ctx.scene.hash)
+    if (in.scene_hash != ctx.scene_hash)
       throw std::runtime_error(path + " was recorded from scene '" + in.scene_file + "' (hash " +
-                               hex(in.scene_hash) + "), but this run reads '" + ctx.cli.scene +
-                               "' (hash " + hex(ctx.scene.hash) +
+                               hex(in.scene_hash) + "), but this run reads '" + ctx.scene_file +
+                               "' (hash " + hex(ctx.scene_hash) +
                                "); replay with the scene file of the recorded run");
     header = {in.protocol, in.scene_hash, static_cast<std::uint64_t>(in.fluid_ranks),
               static_cast<std::uint64_t>(in.dem_ranks)};
@@ -64,7 +65,7 @@ ReplaySource::ReplaySource(const AppContext& ctx, const std::string& path)
 
 ReplaySource::~ReplaySource() = default;
 
-ReplayFluidTransport::ReplayFluidTransport(const AppContext& ctx, const std::string& path)
+ReplayFluidTransport::ReplayFluidTransport(const SideInfo& ctx, const std::string& path)
     : source_(ctx, path) {}
 
 void ReplayFluidTransport::announce(const FluidLayout& layout) {
@@ -100,7 +101,7 @@ void ReplayFluidTransport::send_loads(std::int64_t step,
                              ": the loads differ from the recording at " + *diff);
 }
 
-ReplayDemTransport::ReplayDemTransport(const AppContext& ctx, const std::string& path)
+ReplayDemTransport::ReplayDemTransport(const SideInfo& ctx, const std::string& path)
     : source_(ctx, path) {
   if (source_.rank() == 0 && source_.info().dem_ranks != source_.size())
     source_.log().warn(

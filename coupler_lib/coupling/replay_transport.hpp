@@ -17,8 +17,8 @@
 #include <memory>
 #include <string>
 
-#include "coupler_lib/app/run_app.hpp"
 #include "coupler_lib/coupling/recording.hpp"
+#include "coupler_lib/coupling/side_info.hpp"
 #include "coupler_lib/coupling/transport.hpp"
 
 namespace lbdem {
@@ -28,7 +28,7 @@ class ReplaySource {
  public:
   // Collective over ctx.side_comm. Rank 0 throws when the file is missing, not a recording,
   // or was recorded from another scene.
-  ReplaySource(const AppContext& ctx, const std::string& path);
+  ReplaySource(const SideInfo& ctx, const std::string& path);
   ~ReplaySource();
   const RecordingInfo& info() const { return info_; }
   const std::string& path() const { return path_; }
@@ -49,7 +49,7 @@ class ReplaySource {
 
 class ReplayFluidTransport : public FluidTransport {
  public:
-  ReplayFluidTransport(const AppContext& ctx, const std::string& path);
+  ReplayFluidTransport(const SideInfo& ctx, const std::string& path);
   int dem_ranks() const override { return 1; }  // the recording acts as one DEM rank
   void announce(const FluidLayout& layout) override;
   std::vector<std::vector<BodyState>> receive_states(std::int64_t step) override;
@@ -64,7 +64,7 @@ class ReplayFluidTransport : public FluidTransport {
 
 class ReplayDemTransport : public DemTransport {
  public:
-  ReplayDemTransport(const AppContext& ctx, const std::string& path);
+  ReplayDemTransport(const SideInfo& ctx, const std::string& path);
   int fluid_ranks() const override { return 1; }  // the recording acts as one fluid rank
   FluidLayout receive_layout() override;
   void send_states(std::int64_t step, std::span<const BodyState> owned,

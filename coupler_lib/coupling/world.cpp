@@ -35,15 +35,15 @@ void put(char (&dst)[N], const std::string& s) {
   std::snprintf(dst, N, "%s", s.c_str());
 }
 
-Hello hello_of(const AppContext& ctx, std::uint32_t protocol) {
+Hello hello_of(const SideInfo& ctx, std::uint32_t protocol) {
   Hello h;
   h.protocol = protocol;
-  h.scene_hash = ctx.scene.hash;
+  h.scene_hash = ctx.scene_hash;
   h.size = ctx.size;
   h.app = ctx.app;
-  put(h.side, ctx.info.side);
-  put(h.program, ctx.info.program);
-  put(h.scene, ctx.cli.scene);
+  put(h.side, ctx.side);
+  put(h.program, ctx.program);
+  put(h.scene, ctx.scene_file);
   return h;
 }
 
@@ -155,10 +155,10 @@ void World::check_peer() const {
                     "programs disagree on the number of coupling exchanges");
 }
 
-World connect(const AppContext& ctx, const ConnectOptions& options) {
-  const std::string& scene = ctx.cli.scene;
+World connect(const SideInfo& ctx, const ConnectOptions& options) {
+  const std::string& scene = ctx.scene_file;
   if (ctx.app_count == 1)
-    throw JobError(scene + " couples a fluid with bodies, but only " + ctx.info.program +
+    throw JobError(scene + " couples a fluid with bodies, but only " + ctx.program +
                    " was launched; start both programs: " + coupled_launch_line(scene) +
                    " (or run one side alone from a recording with --replay FILE)");
   if (ctx.app_count > 2)
@@ -171,7 +171,7 @@ World connect(const AppContext& ctx, const ConnectOptions& options) {
   mine[ctx.app] = ctx.world_rank;
   MPI_Request req;
   MPI_Iallreduce(mine, lead, 2, MPI_INT, MPI_MIN, MPI_COMM_WORLD, &req);
-  const double timeout = ctx.scene.coupling.handshake_timeout;
+  const double timeout = ctx.coupling.handshake_timeout;
   const auto deadline = std::chrono::steady_clock::now() +
                         std::chrono::microseconds(static_cast<long long>(timeout * 1e6));
   if (!wait_request_until(req, deadline))
@@ -199,7 +199,7 @@ World connect(const AppContext& ctx, const ConnectOptions& options) {
     MPI_Comm_free(&inter);
     throw JobError(problem);
   }
-  return World(ctx.side_comm, inter, peer_of(peer), wait_mode_from(ctx.scene.coupling.wait));
+  return World(ctx.side_comm, inter, peer_of(peer), wait_mode_from(ctx.coupling.wait));
 }
 
 }  // namespace lbdem

@@ -23,9 +23,10 @@
 #include <cstdint>
 #include <string>
 
-#include "coupler_lib/app/run_app.hpp"
 #include "coupler_lib/coupling/packets.hpp"
+#include "coupler_lib/coupling/side_info.hpp"
 #include "coupler_lib/coupling/wait.hpp"
+#include "coupler_lib/errors.hpp"
 
 namespace lbdem {
 
@@ -83,7 +84,7 @@ class World {
 
 // Collective over MPI_COMM_WORLD. Throws JobError when the handshake finds a mismatch,
 // SideError when the other program does not show up in time.
-World connect(const AppContext& ctx, const ConnectOptions& options = {});
+World connect(const SideInfo& ctx, const ConnectOptions& options = {});
 
 // "mpirun -np A fluid_app scene.yaml : -np B dem_app scene.yaml" for this scene.
 std::string coupled_launch_line(const std::string& scene_file);

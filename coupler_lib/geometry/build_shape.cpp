@@ -19,10 +19,6 @@ namespace {
 // get a 100-sphere fill (the size of the paper's CLUMP-generated cube).
 constexpr int kDefaultFillSpheres = 100;
 
-// Without a fluid lattice, the voxelization only feeds mass properties: 40 voxels across
-// the characteristic length keeps the inertia of curved shapes within about 1 %.
-constexpr double kCellsAcrossWithoutFluid = 40;
-
 // Empty voxel layers kept around the solid.
 constexpr int kVoxelPad = 2;
 
@@ -57,12 +53,6 @@ SolidGeometry make_solid(const ShapeParams& p) {
     return SolidGeometry::mesh(std::move(mesh));
   }
   throw ShapeError(p.where + ": unknown shape kind '" + p.kind + "'");
-}
-
-double shape_voxel_spacing(const ShapeParams& p, const std::optional<FluidParams>& fluid) {
-  if (p.voxel_size > 0) return p.voxel_size;
-  if (fluid) return 0.5 * fluid->dx;
-  return p.size / kCellsAcrossWithoutFluid;
 }
 
 Shape build_shape(const ShapeParams& p, double h) {

@@ -3,21 +3,14 @@
 // voxelization in the shape frame, mass properties from it, the contact clump and its
 // quality, and the bounding radius. Both binaries call this with the same spacing and get
 // identical numbers.
-#include <optional>
-
 #include "coupler_lib/geometry/shape.hpp"
+#include "coupler_lib/geometry/shape_params.hpp"
 #include "coupler_lib/geometry/solid_geometry.hpp"
-#include "coupler_lib/scene/fluid_section.hpp"
-#include "coupler_lib/scene/shapes_section.hpp"
 
 namespace lbdem {
 
 // The solid described by the parameters (reads and checks the STL for kind stl).
 SolidGeometry make_solid(const ShapeParams& params);
-
-// Voxel spacing for a shape: its `voxel_size` if given, else half the fluid spacing when
-// there is a fluid, else size / 40 (DEM-only scenes need no fluid lattice).
-double shape_voxel_spacing(const ShapeParams& params, const std::optional<FluidParams>& fluid);
 
 // Throws ShapeError (message starts with params.where) for unreadable or invalid input.
 Shape build_shape(const ShapeParams& params, double voxel_spacing);

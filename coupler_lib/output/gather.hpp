@@ -1,5 +1,6 @@
 #pragma once
-// Collectives within one program for packet lists of varying length.
+// Collectives within one program for lists of varying length (packets, body states): the
+// one gather to rank 0 of the project, guarded against the int overflow of MPI counts.
 #include <mpi.h>
 
 #include <cstddef>
@@ -38,6 +39,16 @@ std::vector<std::vector<T>> gather_by_rank(std::span<const T> mine, MPI_Comm com
       std::memcpy(out[i].data(), all.data() + displ[i], static_cast<size_t>(counts[i]));
   }
   return out;
+}
+
+// Every rank's `mine` concatenated in rank order on rank 0 (empty elsewhere); the same
+// overflow guard as gather_by_rank.
+template <class T>
+std::vector<T> gather_to_root(std::span<const T> mine, MPI_Comm comm) {
+  std::vector<T> all;
+  for (const auto& part : gather_by_rank(mine, comm))
+    all.insert(all.end(), part.begin(), part.end());
+  return all;
 }
 
 // Rank `root`'s `v` on every rank.

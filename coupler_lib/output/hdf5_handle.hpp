@@ -14,7 +14,8 @@ class H5Handle {
  public:
   using Closer = herr_t (*)(hid_t);
   H5Handle() = default;
-  H5Handle(hid_t id, Closer close, const std::string& what);
+  // Throws std::runtime_error naming `what` when `id` is invalid (the call failed).
+  H5Handle(hid_t id, Closer close, const std::string& what = "an HDF5 call");
   H5Handle(const H5Handle&) = delete;
   H5Handle& operator=(const H5Handle&) = delete;
   H5Handle(H5Handle&& o) noexcept : id_(std::exchange(o.id_, H5I_INVALID_HID)), close_(o.close_) {}

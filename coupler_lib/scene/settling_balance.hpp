@@ -1,6 +1,6 @@
 #pragma once
 // The force balance of a triply periodic settling box, computed identically by both programs
-// (README, "Forces on bodies and fluid").
+// (docs/method.md Eq. (11)).
 //
 // Each body carries its net weight W_k = (rho_k - rho_f) V_k g (gravity and buoyancy on the
 // DEM side). In a triply periodic box nothing carries the total W = sum_k W_k, so a uniform

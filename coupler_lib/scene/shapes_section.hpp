@@ -1,5 +1,5 @@
 #pragma once
-// The `shapes:` catalogue of a scene: what each body looks like (see the README).
+// The `shapes:` catalogue of a scene: what each body looks like (docs/user-guide.md, "Shapes and clumps").
 //
 //   shapes:
 //     - name: cube
@@ -8,40 +8,12 @@
 //                             # ellipsoid: semi_axes [a,b,c]; stl: file + scale
 //       clump: {file: ../shapes/cube_489_surface.clump, scale: 0.283e-3}
 //       voxel_size: 5e-6      # optional; default: half the fluid spacing
-#include <array>
-#include <string>
 #include <vector>
 
+#include "coupler_lib/geometry/shape_params.hpp"
 #include "coupler_lib/scene/yaml_reader.hpp"
 
 namespace lbdem {
-
-// How the contact clump of a shape is obtained.
-struct ClumpParams {
-  std::string source = "default";  // default | file | surface | fill
-  std::string file;                // absolute (resolved against the scene's folder)
-  double scale = 1;                // file coordinates and radii are multiplied by this
-  int spheres = 0;                 // fill: target sphere count
-  int grid = 0;                    // surface: grid points per edge of the bounding box
-  double radius_ratio = 1;         // surface: sphere radius / grid spacing
-  bool center_sphere = true;       // surface: add the largest inscribed sphere
-};
-
-struct ShapeParams {
-  std::string name;
-  std::string kind;  // sphere | cube | cuboid | ellipsoid | stl
-  // Characteristic length in m: sphere diameter, cube edge, longest cuboid edge, longest
-  // ellipsoid axis (2 a_max); for stl, the longest scaled bounding-box edge (the file is
-  // read and its bounds taken while parsing).
-  double size = 0;
-  // m: cube/cuboid edges, sphere/ellipsoid semi-axes, stl scaled bounding-box edges
-  std::array<double, 3> extents{0, 0, 0};
-  std::string file;       // stl: absolute path
-  double scale = 1;       // stl: vertex coordinates are multiplied by this
-  double voxel_size = 0;  // m; 0: use the default (see shape_voxel_spacing)
-  ClumpParams clump;
-  std::string where;  // "scene.yaml:12: shapes[0]", for errors found after parsing
-};
 
 std::vector<ShapeParams> parse_shapes(Section& root);
 

@@ -2,7 +2,7 @@
 // SI <-> lattice unit conversion (one place, like OpenLB's UnitConverter).
 //
 // Lattice units: dx = dt = rho = 1. With BGK, nu_lattice = c_s^2 (tau - 1/2), c_s^2 = 1/3
-// (paper, Eq. viscosity), so the physical time step follows from the resolution and tau:
+// (docs/method.md Eq. (3)), so the physical time step follows from the resolution and tau:
 //   dt = (tau - 1/2) dx^2 / (3 nu).
 // Lattice node g (0-based global index along an axis) sits at x = (g + 1/2) dx, so the
 // domain [0, L] is covered by N = L / dx cells and half-way walls lie exactly on 0 and L.

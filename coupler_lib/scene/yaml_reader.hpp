@@ -18,13 +18,9 @@
 #include <string_view>
 #include <vector>
 
-namespace lbdem {
+#include "coupler_lib/errors.hpp"
 
-// A bad scene. The message is complete and meant for the user as it is.
-class SceneError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
+namespace lbdem {
 
 // Inclusive/exclusive numeric bounds for a scalar key.
 struct Bounds {

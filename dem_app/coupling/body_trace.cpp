@@ -5,30 +5,9 @@
 #include <stdexcept>
 #include <vector>
 
+#include "coupler_lib/output/gather.hpp"
+
 namespace lbdem {
-
-namespace {
-
-// Raw-byte gather of trivially copyable packets to rank 0.
-template <class P>
-std::vector<P> gather(std::span<const P> mine, MPI_Comm comm, int rank) {
-  int size = 0;
-  MPI_Comm_size(comm, &size);
-  const int bytes = static_cast<int>(mine.size() * sizeof(P));
-  std::vector<int> counts(static_cast<size_t>(size)), displs(static_cast<size_t>(size));
-  MPI_Gather(&bytes, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
-  int total = 0;
-  for (int r = 0; r < size; ++r) {
-    displs[size_t(r)] = total;
-    total += counts[size_t(r)];
-  }
-  std::vector<P> all(rank == 0 ? size_t(total) / sizeof(P) : 0);
-  MPI_Gatherv(mine.data(), bytes, MPI_BYTE, all.data(), counts.data(), displs.data(), MPI_BYTE, 0,
-              comm);
-  return all;
-}
-
-}  // namespace
 
 BodyTrace::BodyTrace(const std::string& path, MPI_Comm comm) : path_(path), comm_(comm) {
   MPI_Comm_rank(comm, &rank_);
@@ -41,8 +20,8 @@ BodyTrace::BodyTrace(const std::string& path, MPI_Comm comm) : path_(path), comm
 
 void BodyTrace::write(double time, std::span<const BodyState> states,
                       std::span<const BodyLoad> loads) {
-  std::vector<BodyState> all_states = gather(states, comm_, rank_);
-  std::vector<BodyLoad> all_loads = gather(loads, comm_, rank_);
+  std::vector<BodyState> all_states = gather_to_root(states, comm_);
+  std::vector<BodyLoad> all_loads = gather_to_root(loads, comm_);
   if (rank_ != 0) return;
   std::map<std::int64_t, const BodyLoad*> by_id;
   for (const auto& l : all_loads) by_id[l.id] = &l;

@@ -10,7 +10,7 @@
 #include "coupler_lib/coupling/fluid_coupler.hpp"
 #include "coupler_lib/coupling/schedule.hpp"
 #include "coupler_lib/coupling/world.hpp"
-#include "coupler_lib/geometry/build_shape.hpp"
+#include "coupler_lib/scene/shape_catalogue.hpp"
 #include "fluid_app/coupling/momentum_audit.hpp"
 #include "fluid_app/coupling/settling_force.hpp"
 #include "fluid_app/fluid_run.hpp"
@@ -20,13 +20,6 @@
 namespace lbdem {
 
 namespace {
-
-std::vector<Shape> build_shapes(const Scene& scene) {
-  std::vector<Shape> shapes;
-  for (const auto& p : scene.shapes)
-    shapes.push_back(build_shape(p, shape_voxel_spacing(p, scene.fluid)));
-  return shapes;
-}
 
 FluidGeometry geometry_of(const Scene& scene, const LocalBox& box,
                           const std::vector<Shape>& shapes) {
@@ -52,7 +45,7 @@ int run_typed(AppContext& ctx) {
   World world;
   if (!replay) world = connect(ctx);
 
-  const std::vector<Shape> shapes = build_shapes(scene);
+  const std::vector<Shape> shapes = build_scene_shapes(scene);
   FluidRun<T> run(ctx);
   FluidSolver<T>& solver = run.solver();
   RunWatch<T> watch(ctx, run);

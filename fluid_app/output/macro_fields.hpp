@@ -1,8 +1,8 @@
 #pragma once
 // The macroscopic state of one rank's block of the lattice, in lattice units: the common input
 // of the field writer, the time series, the stability watch and the validation. The solver
-// fills it (density and the physical velocity, i.e. including half the forcing shift, paper
-// Eq. physicalVelocity); everything downstream only reads it.
+// fills it (density and the physical velocity, i.e. including half the forcing shift,
+// docs/method.md Eq. (6)); everything downstream only reads it.
 #include <array>
 #include <cstddef>
 #include <vector>

@@ -1,11 +1,8 @@
 #include "fluid_app/output/xdmf_file.hpp"
 
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <sstream>
-#include <stdexcept>
 
 namespace lbdem {
 
@@ -60,17 +57,6 @@ std::string xdmf_text(const FieldView& view, const FieldQuantities& what, double
     << "  </Domain>\n"
     << "</Xdmf>\n";
   return x.str();
-}
-
-void write_file_atomically(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error("cannot write " + tmp);
-    out << text;
-    if (!out) throw std::runtime_error("writing " + tmp + " failed");
-  }
-  std::filesystem::rename(tmp, path);
 }
 
 }  // namespace lbdem

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "coupler_lib/output/atomic_file.hpp"
 #include "fluid_app/output/field_file.hpp"
 #include "fluid_app/output/field_view.hpp"
 
@@ -18,9 +19,5 @@ struct XdmfStep {
 // The complete XDMF text for `view` over all `steps`.
 std::string xdmf_text(const FieldView& view, const FieldQuantities& what, double dx,
                       const std::vector<XdmfStep>& steps);
-
-// Writes `text` to `path` through a temporary file and a rename, so a reader (or a run that
-// dies during output) never sees half a file.
-void write_file_atomically(const std::string& path, const std::string& text);
 
 }  // namespace lbdem

@@ -1,6 +1,6 @@
 // The files shipped under configs/shapes: every clump loads and has the sphere count its
 // header states, and for one clump of each method the shape errors recomputed here agree
-// with the header (the numbers in the README); the STL files are closed and oriented.
+// with the header (the numbers in docs/user-guide.md); the STL files are closed and oriented.
 #include <gtest/gtest.h>
 
 #include <filesystem>

@@ -1,5 +1,5 @@
-// The `shapes:` scene keys and build_shape: parameters -> voxels in the shape frame, mass
-// properties, clump and its quality.
+// The `shapes:` scene keys, the voxel spacing the shape catalogue picks, and build_shape:
+// parameters -> voxels in the shape frame, mass properties, clump and its quality.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,6 +9,7 @@
 #include "coupler_lib/errors.hpp"
 #include "coupler_lib/geometry/build_shape.hpp"
 #include "coupler_lib/geometry/mass_properties.hpp"
+#include "coupler_lib/scene/shape_catalogue.hpp"
 #include "coupler_lib/scene/shapes_section.hpp"
 
 namespace lbdem {

@@ -1,0 +1,37 @@
+#pragma once
+// The parameters that describe one shape and its contact clump, whether they come from a
+// scene's `shapes:` catalogue (coupler_lib/scene/shapes_section.hpp) or from clump_gen's
+// command line. Plain data; build_shape.hpp turns them into a Shape.
+#include <array>
+#include <string>
+
+namespace lbdem {
+
+// How the contact clump of a shape is obtained.
+struct ClumpParams {
+  std::string source = "default";  // default | file | surface | fill
+  std::string file;                // absolute (resolved against the scene's folder)
+  double scale = 1;                // file coordinates and radii are multiplied by this
+  int spheres = 0;                 // fill: target sphere count
+  int grid = 0;                    // surface: grid points per edge of the bounding box
+  double radius_ratio = 1;         // surface: sphere radius / grid spacing
+  bool center_sphere = true;       // surface: add the largest inscribed sphere
+};
+
+struct ShapeParams {
+  std::string name;
+  std::string kind;  // sphere | cube | cuboid | ellipsoid | stl
+  // Characteristic length in m: sphere diameter, cube edge, longest cuboid edge, longest
+  // ellipsoid axis (2 a_max); for stl, the longest scaled bounding-box edge (the file is
+  // read and its bounds taken while parsing).
+  double size = 0;
+  // m: cube/cuboid edges, sphere/ellipsoid semi-axes, stl scaled bounding-box edges
+  std::array<double, 3> extents{0, 0, 0};
+  std::string file;       // stl: absolute path
+  double scale = 1;       // stl: vertex coordinates are multiplied by this
+  double voxel_size = 0;  // m; 0: use the default (scene/shape_catalogue.hpp)
+  ClumpParams clump;
+  std::string where;  // "scene.yaml:12: shapes[0]", for errors found after parsing
+};
+
+}  // namespace lbdem
