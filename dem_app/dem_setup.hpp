@@ -8,6 +8,7 @@
 
 #include "coupler_lib/geometry/shape.hpp"
 #include "coupler_lib/scene/bodies_section.hpp"
+#include "coupler_lib/scene/body_placement.hpp"
 #include "coupler_lib/scene/dem_section.hpp"
 #include "coupler_lib/scene/scene.hpp"
 
@@ -34,9 +35,6 @@ void validate_dem_setup(const DemSetup& setup);
 
 // Smallest clump-sphere radius of a shape.
 double smallest_sphere_radius(const Shape& shape);
-
-// Largest distance of a clump sphere's surface from the centroid (LAMMPS's body extent).
-double clump_extent(const Shape& shape);
 
 // DEM step: dem.dt if given, else dt_fraction x the smallest Rayleigh time over the bodies.
 double dem_time_step(const DemSetup& setup);

@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <iostream>
 
+#include "coupler_lib/scene/scene_checks.hpp"
+
 namespace lbdem {
 
 namespace {
@@ -63,6 +65,7 @@ StartOutcome start_up(AppContext& ctx, int argc, char** argv) {
   if (ctx.cli.help || ctx.cli.version) return {Start::stop, "", false};
   try {
     ctx.scene = load_scene(ctx.cli.scene);
+    check_whole_scene(ctx.scene, physical_memory_bytes());
   } catch (const std::exception& e) {
     return {Start::fail, e.what(), false};
   }
@@ -142,7 +145,15 @@ int run_app(int argc, char** argv, const AppInfo& info,
     MPI_Barrier(ctx.side_comm);
     MPI_Abort(MPI_COMM_WORLD, 1);
   } catch (const SceneError& e) {
-    // Side-specific validation: detected by all ranks of this side.
+    // Side-specific validation: detected by all ranks of this side. Under --check this program
+    // runs alone and no rank waits for another: end cleanly, without MPI_Abort's noise.
+    if (ctx.cli.check && ctx.app_count == 1) {
+      if (ctx.rank == 0) {
+        std::fprintf(stderr, "%s: error: %s\n", info.program.c_str(), e.what());
+        std::fflush(stderr);
+      }
+      return finish(1);
+    }
     if (ctx.rank == 0) abort_all(who, e.what());
     MPI_Barrier(ctx.side_comm);
     MPI_Abort(MPI_COMM_WORLD, 1);
