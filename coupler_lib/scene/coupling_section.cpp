@@ -27,6 +27,11 @@ CouplingParams parse_coupling(Section& s) {
   p.handshake_timeout =
       s.get<double>("handshake_timeout", 60.0, "wall s to wait for the other program at start",
                     Bounds::positive());
+  p.stall_timeout = s.get<double>(
+      "stall_timeout", 0.0,
+      "wall s a side waits for the other's packets before ending the job (0: automatic, the "
+      "larger of 600 s and 50 x the slowest exchange so far)",
+      Bounds::non_negative());
   p.wait = s.choice("wait", "backoff", {"backoff", "blocking"},
                     "how a side waits for the other: backoff sleeps, blocking spins a core");
   s.finish();
