@@ -17,7 +17,7 @@ launch() {  # launch LOG ARGS...: run under a 10 s limit, print the exit status
   echo $?
 }
 # The message without the program's name, for comparing the two --check runs.
-message() { grep -m1 -E "^(fluid_app|dem_app): error: " "$1" | sed -E 's/^(fluid_app|dem_app): //'; }
+message() { grep -a -m1 -E "^(fluid_app|dem_app): error: " "$1" | sed -E 's/^(fluid_app|dem_app): //'; }
 noise='ORTE_ERROR_LOG|Segmentation fault|core dumped|Aborted|terminate called|bad_alloc|MPI_ABORT|exited on signal'
 
 for prog in "$fluid" "$dem"; do
@@ -36,8 +36,8 @@ for scene in "$corpus"/scenes/*.yaml; do
     log=$work/${r%%:*}.log rc=${r#*:}
     [ "$rc" = 0 ] && why+=" ${r%%:*}: accepted;"
     [ "$rc" = 137 ] && why+=" ${r%%:*}: no end within 10 s;"
-    grep -q "error" "$log" || why+=" ${r%%:*}: no error message;"
-    grep -qE "$noise" "$log" && why+=" ${r%%:*}: $(grep -m1 -oE "$noise" "$log");"
+    grep -aq "error" "$log" || why+=" ${r%%:*}: no error message;"
+    grep -aqE "$noise" "$log" && why+=" ${r%%:*}: $(grep -a -m1 -oE "$noise" "$log");"
   done
   mf=$(message "$work/f.log") md=$(message "$work/d.log")
   [ "$mf" = "$md" ] || why+=" the two --check messages differ;"
