@@ -54,7 +54,21 @@ struct StartOutcome {
   bool show_usage = false;
 };
 
-StartOutcome start_up(AppContext& ctx, int argc, char** argv) {
+// Physical memory of all the nodes this job runs on (one contribution per node): a lattice
+// split over many nodes may need more than one node has. Collective over MPI_COMM_WORLD.
+double job_memory_bytes() {
+  MPI_Comm node = MPI_COMM_NULL;
+  MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
+  int node_rank = 0;
+  MPI_Comm_rank(node, &node_rank);
+  MPI_Comm_free(&node);
+  const double mine = node_rank == 0 ? physical_memory_bytes() : 0;
+  double total = 0;
+  MPI_Allreduce(&mine, &total, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  return total;
+}
+
+StartOutcome start_up(AppContext& ctx, int argc, char** argv, double memory_bytes) {
   StartOutcome out;
   try {
     std::vector<std::string> args(argv + 1, argv + argc);
@@ -65,7 +79,7 @@ StartOutcome start_up(AppContext& ctx, int argc, char** argv) {
   if (ctx.cli.help || ctx.cli.version) return {Start::stop, "", false};
   try {
     ctx.scene = load_scene(ctx.cli.scene);
-    check_whole_scene(ctx.scene, physical_memory_bytes());
+    check_whole_scene(ctx.scene, memory_bytes);
   } catch (const std::exception& e) {
     return {Start::fail, e.what(), false};
   }
@@ -102,7 +116,7 @@ int run_app(int argc, char** argv, const AppInfo& info,
 
   // Both binaries agree on the outcome of start-up, so a bad command line or scene on one
   // side cannot leave the other side waiting at the handshake.
-  const StartOutcome outcome = start_up(ctx, argc, argv);
+  const StartOutcome outcome = start_up(ctx, argc, argv, job_memory_bytes());
   int mine = static_cast<int>(outcome.start), worst = 0;
   MPI_Allreduce(&mine, &worst, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
   if (worst == static_cast<int>(Start::fail)) {

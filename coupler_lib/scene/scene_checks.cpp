@@ -40,7 +40,7 @@ void check_memory(const Scene& scene, double memory_bytes) {
     std::ostringstream m;
     m << scene.file << ": fluid: the lattice of " << c[0] << " x " << c[1] << " x " << c[2]
       << " cells needs at least " << gib(need) << " (" << (need / (double(c[0]) * c[1] * c[2]))
-      << " B per cell) but this machine has " << gib(memory_bytes)
+      << " B per cell) but the nodes of this job have " << gib(memory_bytes)
       << "; use a coarser fluid.dx, a smaller fluid.domain or precision: float";
     throw SceneError(m.str());
   }
