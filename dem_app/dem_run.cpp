@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "coupler_lib/app/progress.hpp"
+#include "coupler_lib/coupling/schedule.hpp"
 #include "coupler_lib/scene/shape_catalogue.hpp"
 #include "dem_app/body_output.hpp"
 #include "dem_app/contact_model.hpp"
@@ -53,7 +54,7 @@ int run_dem_only(AppContext& ctx) {
 
   LammpsEngine engine(ctx.side_comm, std::move(setup));
   const double dt = engine.dt();
-  const auto total = static_cast<long>(std::ceil(scene.time.end / dt - 1e-9));
+  const auto total = static_cast<long>(step_count(scene.time.end, dt));
   auto every = [dt](double interval) {
     return interval > 0 ? std::max(1L, std::lround(interval / dt)) : 0L;
   };

@@ -8,6 +8,7 @@
 
 #include "coupler_lib/geometry/shape.hpp"
 #include "coupler_lib/scene/bodies_section.hpp"
+#include "coupler_lib/scene/body_placement.hpp"
 #include "coupler_lib/scene/dem_section.hpp"
 #include "coupler_lib/scene/scene.hpp"
 
@@ -34,9 +35,6 @@ void validate_dem_setup(const DemSetup& setup);
 
 // Smallest clump-sphere radius of a shape.
 double smallest_sphere_radius(const Shape& shape);
-
-// Largest distance of a clump sphere's surface from the centroid (LAMMPS's body extent).
-double clump_extent(const Shape& shape);
 
 // Radius whose Rayleigh time sets the DEM step for a body of this shape (dem.dt_rule): the
 // smallest clump sphere, or the volume-equivalent sphere of the body.

@@ -10,6 +10,14 @@ int main(int argc, char** argv) {
   return lbdem::run_app(
       argc, argv, info,
       [](lbdem::AppContext& ctx) {
+        // The whole scene was checked at start-up, as fluid_app does; a fluid-only scene is
+        // valid here too, it just gives dem_app nothing to do.
+        if (!ctx.scene.dem) {
+          if (ctx.rank == 0)
+            ctx.log->info("scene '{}' is valid (it has no 'dem' section: run it with fluid_app)",
+                          ctx.scene.name);
+          return;
+        }
         const auto setup = lbdem::make_dem_setup(ctx.scene, lbdem::build_scene_shapes(ctx.scene),
                                                  ctx.scene.coupled());
         lbdem::validate_dem_setup(setup);

@@ -1,5 +1,6 @@
 #include "fluid_app/fluid_run.hpp"
 
+#include "coupler_lib/coupling/schedule.hpp"
 #include "fluid_app/output/run_watch.hpp"
 
 #include <spdlog/fmt/fmt.h>
@@ -47,7 +48,7 @@ FluidRun<T>::FluidRun(AppContext& ctx) : ctx_(ctx), params_(*ctx.scene.fluid) {
   const auto& d = solver_->decomposition();
   ctx.log->info("decomposition {} x {} x {} ranks; kernel moves {} B per cell update", d.dims()[0],
                 d.dims()[1], d.dims()[2], FluidSolver<T>::bytes_per_cell_update(false));
-  total_steps_ = std::int64_t(std::ceil(ctx.scene.time.end / params_.units.dt - 1e-9));
+  total_steps_ = step_count(ctx.scene.time.end, params_.units.dt);
   ctx.log->info("{} steps to t = {} s", total_steps_, ctx.scene.time.end);
   progress_ =
       std::make_unique<Progress>(ctx.log, ctx.scene.time.progress_interval, ctx.scene.time.end,

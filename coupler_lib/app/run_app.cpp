@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <iostream>
 
+#include "coupler_lib/scene/scene_checks.hpp"
+
 namespace lbdem {
 
 namespace {
@@ -52,7 +54,21 @@ struct StartOutcome {
   bool show_usage = false;
 };
 
-StartOutcome start_up(AppContext& ctx, int argc, char** argv) {
+// Physical memory of all the nodes this job runs on (one contribution per node): a lattice
+// split over many nodes may need more than one node has. Collective over MPI_COMM_WORLD.
+double job_memory_bytes() {
+  MPI_Comm node = MPI_COMM_NULL;
+  MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
+  int node_rank = 0;
+  MPI_Comm_rank(node, &node_rank);
+  MPI_Comm_free(&node);
+  const double mine = node_rank == 0 ? physical_memory_bytes() : 0;
+  double total = 0;
+  MPI_Allreduce(&mine, &total, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  return total;
+}
+
+StartOutcome start_up(AppContext& ctx, int argc, char** argv, double memory_bytes) {
   StartOutcome out;
   try {
     std::vector<std::string> args(argv + 1, argv + argc);
@@ -66,6 +82,7 @@ StartOutcome start_up(AppContext& ctx, int argc, char** argv) {
     ctx.scene_file = ctx.cli.scene;
     ctx.scene_hash = ctx.scene.hash;
     ctx.coupling = ctx.scene.coupling;
+    check_whole_scene(ctx.scene, memory_bytes);
   } catch (const std::exception& e) {
     return {Start::fail, e.what(), false};
   }
@@ -104,7 +121,7 @@ int run_app(int argc, char** argv, const AppInfo& info,
 
   // Both binaries agree on the outcome of start-up, so a bad command line or scene on one
   // side cannot leave the other side waiting at the handshake.
-  const StartOutcome outcome = start_up(ctx, argc, argv);
+  const StartOutcome outcome = start_up(ctx, argc, argv, job_memory_bytes());
   int mine = static_cast<int>(outcome.start), worst = 0;
   MPI_Allreduce(&mine, &worst, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
   if (worst == static_cast<int>(Start::fail)) {
@@ -147,7 +164,15 @@ int run_app(int argc, char** argv, const AppInfo& info,
     MPI_Barrier(ctx.side_comm);
     MPI_Abort(MPI_COMM_WORLD, 1);
   } catch (const SceneError& e) {
-    // Side-specific validation: detected by all ranks of this side.
+    // Side-specific validation: detected by all ranks of this side. Under --check this program
+    // runs alone and no rank waits for another: end cleanly, without MPI_Abort's noise.
+    if (ctx.cli.check && ctx.app_count == 1) {
+      if (ctx.rank == 0) {
+        std::fprintf(stderr, "%s: error: %s\n", info.program.c_str(), e.what());
+        std::fflush(stderr);
+      }
+      return finish(1);
+    }
     if (ctx.rank == 0) abort_all(who, e.what());
     MPI_Barrier(ctx.side_comm);
     MPI_Abort(MPI_COMM_WORLD, 1);

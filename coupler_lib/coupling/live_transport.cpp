@@ -4,16 +4,35 @@
 
 namespace lbdem {
 
+namespace {
+
+// One exchange whose waits for the other program run under the stall watch of `stall`.
+template <class T>
+std::vector<std::vector<T>> watched(const World& world, StallWatch& stall, WaitMode mode,
+                                    double& waited, std::int64_t step,
+                                    const std::vector<std::vector<T>>& send) {
+  stall.begin(step);
+  auto received = exchange(world.inter(), send,
+                           ExchangeWait(
+                               mode,
+                               [&world, &stall] {
+                                 world.check_peer();
+                                 stall.check();
+                               },
+                               &waited));
+  stall.end();
+  return received;
+}
+
+}  // namespace
+
 LiveFluidTransport::LiveFluidTransport(const World& world)
     : world_(&world),
       inter_(world.inter()),
       rank_(world.rank()),
       dem_ranks_(world.peer().size),
-      wait_(world.wait()) {}
-
-ExchangeWait LiveFluidTransport::how() {
-  return {wait_, [this] { world_->check_peer(); }, &waited_};
-}
+      wait_(world.wait()),
+      stall_(world.stall_timeout(), world.peer()) {}
 
 void LiveFluidTransport::announce(const FluidLayout& layout) {
   // Fluid rank 0 broadcasts to every DEM rank (intercommunicator broadcast: the sending
@@ -28,22 +47,22 @@ void LiveFluidTransport::announce(const FluidLayout& layout) {
   wait_request(req, wait_, [this] { world_->check_peer(); });
 }
 
-std::vector<std::vector<BodyState>> LiveFluidTransport::receive_states(std::int64_t) {
-  return exchange(inter_, std::vector<std::vector<BodyState>>(static_cast<size_t>(dem_ranks_)),
-                  how());
+std::vector<std::vector<BodyState>> LiveFluidTransport::receive_states(std::int64_t step) {
+  return watched(*world_, stall_, wait_, waited_, step,
+                 std::vector<std::vector<BodyState>>(static_cast<size_t>(dem_ranks_)));
 }
 
-void LiveFluidTransport::send_loads(std::int64_t,
+void LiveFluidTransport::send_loads(std::int64_t step,
                                     const std::vector<std::vector<BodyLoad>>& per_dem_rank) {
-  exchange(inter_, per_dem_rank, how());
+  watched(*world_, stall_, wait_, waited_, step, per_dem_rank);
 }
 
 LiveDemTransport::LiveDemTransport(const World& world)
-    : world_(&world), inter_(world.inter()), fluid_ranks_(world.peer().size), wait_(world.wait()) {}
-
-ExchangeWait LiveDemTransport::how() {
-  return {wait_, [this] { world_->check_peer(); }, &waited_};
-}
+    : world_(&world),
+      inter_(world.inter()),
+      fluid_ranks_(world.peer().size),
+      wait_(world.wait()),
+      stall_(world.stall_timeout(), world.peer()) {}
 
 FluidLayout LiveDemTransport::receive_layout() {
   unsigned long long n = 0;
@@ -56,14 +75,14 @@ FluidLayout LiveDemTransport::receive_layout() {
   return unpack_layout(flat);
 }
 
-void LiveDemTransport::send_states(std::int64_t, std::span<const BodyState>,
+void LiveDemTransport::send_states(std::int64_t step, std::span<const BodyState>,
                                    const std::vector<std::vector<BodyState>>& per_fluid_rank) {
-  exchange(inter_, per_fluid_rank, how());
+  watched(*world_, stall_, wait_, waited_, step, per_fluid_rank);
 }
 
-std::vector<std::vector<BodyLoad>> LiveDemTransport::receive_loads(std::int64_t) {
-  return exchange(inter_, std::vector<std::vector<BodyLoad>>(static_cast<size_t>(fluid_ranks_)),
-                  how());
+std::vector<std::vector<BodyLoad>> LiveDemTransport::receive_loads(std::int64_t step) {
+  return watched(*world_, stall_, wait_, waited_, step,
+                 std::vector<std::vector<BodyLoad>>(static_cast<size_t>(fluid_ranks_)));
 }
 
 }  // namespace lbdem

@@ -1,8 +1,9 @@
 #pragma once
 // The live transport: packets go to the other program over the intercommunicator
 // (exchange.hpp), waiting with the world's wait mode and watching for the other program
-// leaving early (World::check_peer).
+// leaving early (World::check_peer) or going silent (StallWatch).
 #include "coupler_lib/coupling/exchange.hpp"
+#include "coupler_lib/coupling/stall_watch.hpp"
 #include "coupler_lib/coupling/transport.hpp"
 #include "coupler_lib/coupling/world.hpp"
 
@@ -19,13 +20,13 @@ class LiveFluidTransport : public FluidTransport {
   double waited() const override { return waited_; }
 
  private:
-  ExchangeWait how();
   double waited_ = 0;
   const World* world_;
   MPI_Comm inter_;
   int rank_;
   int dem_ranks_;
   WaitMode wait_;
+  StallWatch stall_;
 };
 
 class LiveDemTransport : public DemTransport {
@@ -39,12 +40,12 @@ class LiveDemTransport : public DemTransport {
   double waited() const override { return waited_; }
 
  private:
-  ExchangeWait how();
   double waited_ = 0;
   const World* world_;
   MPI_Comm inter_;
   int fluid_ranks_;
   WaitMode wait_;
+  StallWatch stall_;
 };
 
 }  // namespace lbdem

@@ -25,6 +25,10 @@ std::int64_t cadence(double seconds, double dt, int exchange_interval) {
 
 }  // namespace
 
+std::int64_t step_count(double end, double dt) {
+  return std::max<std::int64_t>(1, ceil_ratio(end, dt));
+}
+
 int dem_substeps(double dt_fluid, double dt_dem) {
   if (dt_dem >= dt_fluid) return 1;
   const std::int64_t n = ceil_ratio(dt_fluid, dt_dem);
@@ -53,7 +57,7 @@ Schedule make_schedule(const Scene& scene, double dt_fluid, double dt_dem) {
     s.dt_dem = dt_dem;
     s.dem_substeps = 1;
   }
-  s.steps = std::max<std::int64_t>(1, ceil_ratio(scene.time.end, s.dt));
+  s.steps = step_count(scene.time.end, s.dt);
   s.exchange_interval = scene.coupling.exchange_interval;
   s.output_interval = cadence(scene.coupling.output_interval, s.dt, s.exchange_interval);
   s.checkpoint_interval = cadence(scene.coupling.checkpoint_interval, s.dt, s.exchange_interval);

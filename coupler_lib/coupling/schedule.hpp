@@ -35,6 +35,11 @@ struct Schedule {
   }
 };
 
+// Outer steps to reach `end` with step `dt` (both > 0): ceil(end / dt) with a relative slack
+// of 1e-9, so 0.3 / 0.1 = 2.9999999999999996 counts as 3; at least 1. Every step count of both
+// programs comes from here, so they can never disagree by one step.
+std::int64_t step_count(double end, double dt);
+
 // n_DEM for a fluid step `dt_fluid` and an asked DEM step `dt_dem` (both > 0).
 int dem_substeps(double dt_fluid, double dt_dem);
 

@@ -93,8 +93,12 @@ std::string coupled_launch_line(const std::string& scene_file) {
   return "mpirun -np A fluid_app " + scene_file + " : -np B dem_app " + scene_file;
 }
 
-World::World(MPI_Comm side, MPI_Comm inter, PeerInfo peer, WaitMode wait)
-    : side_(side), inter_(inter), peer_(std::move(peer)), wait_(wait) {
+World::World(MPI_Comm side, MPI_Comm inter, PeerInfo peer, WaitMode wait, double stall_timeout)
+    : side_(side),
+      inter_(inter),
+      stall_timeout_(stall_timeout),
+      peer_(std::move(peer)),
+      wait_(wait) {
   MPI_Comm_rank(side_, &rank_);
   MPI_Comm_size(side_, &size_);
   MPI_Comm_dup(inter_, &control_);
@@ -119,6 +123,7 @@ World& World::operator=(World&& o) noexcept {
     size_ = o.size_;
     peer_ = std::move(o.peer_);
     wait_ = o.wait_;
+    stall_timeout_ = o.stall_timeout_;
   }
   return *this;
 }
@@ -199,7 +204,8 @@ World connect(const SideInfo& ctx, const ConnectOptions& options) {
     MPI_Comm_free(&inter);
     throw JobError(problem);
   }
-  return World(ctx.side_comm, inter, peer_of(peer), wait_mode_from(ctx.coupling.wait));
+  return World(ctx.side_comm, inter, peer_of(peer), wait_mode_from(ctx.coupling.wait),
+               ctx.coupling.stall_timeout);
 }
 
 }  // namespace lbdem

@@ -50,7 +50,7 @@ struct ConnectOptions {
 class World {
  public:
   World() = default;
-  World(MPI_Comm side, MPI_Comm inter, PeerInfo peer, WaitMode wait);
+  World(MPI_Comm side, MPI_Comm inter, PeerInfo peer, WaitMode wait, double stall_timeout = 0);
   World(World&& o) noexcept;
   World& operator=(World&& o) noexcept;
   World(const World&) = delete;
@@ -63,6 +63,7 @@ class World {
   int size() const { return size_; }
   const PeerInfo& peer() const { return peer_; }
   WaitMode wait() const { return wait_; }
+  double stall_timeout() const { return stall_timeout_; }  // coupling.stall_timeout
 
   // Called while waiting for packets: throws SideError when the other program said goodbye
   // more than a grace period ago (it finished; what this program waits for will not come).
@@ -78,6 +79,7 @@ class World {
   mutable bool peer_left_ = false;
   mutable std::chrono::steady_clock::time_point peer_left_at_{};
   int rank_ = 0, size_ = 1;
+  double stall_timeout_ = 0;
   PeerInfo peer_;
   WaitMode wait_ = WaitMode::backoff;
 };

@@ -1,5 +1,7 @@
 #include "coupler_lib/scene/shape_catalogue.hpp"
 
+#include <string>
+
 #include "coupler_lib/errors.hpp"
 #include "coupler_lib/geometry/build_shape.hpp"
 
@@ -21,11 +23,16 @@ double shape_voxel_spacing(const ShapeParams& p, const std::optional<FluidParams
 
 std::vector<Shape> build_scene_shapes(const Scene& scene) {
   std::vector<Shape> out;
-  for (const auto& p : scene.shapes) {
+  for (size_t i = 0; i < scene.shapes.size(); ++i) {
+    const ShapeParams& p = scene.shapes[i];
     try {
       out.push_back(build_shape(p, shape_voxel_spacing(p, scene.fluid)));
     } catch (const ShapeError& e) {
-      throw SceneError(e.what());
+      // Errors found while reading a file already name it; the others get the shape's place.
+      const std::string what = e.what();
+      if (what.rfind(scene.file, 0) == 0) throw SceneError(what);
+      throw SceneError(scene.file + ": shapes[" + std::to_string(i) + "] '" + p.name +
+                       "': " + what);
     }
   }
   return out;

@@ -34,6 +34,28 @@ std::string Bounds::describe() const {
 Section::Section(YAML::Node node, std::shared_ptr<SceneSource> source, std::string path)
     : node_(std::move(node)), source_(std::move(source)), path_(std::move(path)) {}
 
+namespace {
+
+// yaml-cpp keeps both entries of a key given twice and `node[key]` silently returns the first;
+// YAML 1.2 requires keys to be unique, so a repeated key is refused wherever it occurs.
+void reject_duplicate_keys(const YAML::Node& n, const std::string& file) {
+  if (n.IsSequence()) {
+    for (const auto& e : n) reject_duplicate_keys(e, file);
+    return;
+  }
+  if (!n.IsMap()) return;
+  std::set<std::string> seen;
+  for (const auto& kv : n) {
+    const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : YAML::Dump(kv.first);
+    if (!seen.insert(key).second)
+      throw SceneError(file + ":" + std::to_string(kv.first.Mark().line + 1) + ": key '" + key +
+                       "' is given twice in the same mapping (YAML keys must be unique)");
+    reject_duplicate_keys(kv.second, file);
+  }
+}
+
+}  // namespace
+
 Section Section::load_file(const std::string& file) {
   auto src = std::make_shared<SceneSource>();
   src->file = file;
@@ -47,6 +69,7 @@ Section Section::load_file(const std::string& file) {
                      std::to_string(e.mark.column + 1) + ": YAML syntax error: " + e.msg);
   }
   if (!root.IsMap()) throw SceneError(file + ": the scene must be a YAML mapping of sections");
+  reject_duplicate_keys(root, file);
   return Section(root, src, "");
 }
 
@@ -61,6 +84,7 @@ Section Section::load_string(const std::string& text, const std::string& name) {
                      ": YAML syntax error: " + e.msg);
   }
   if (!root.IsMap()) throw SceneError(name + ": the scene must be a YAML mapping of sections");
+  reject_duplicate_keys(root, name);
   return Section(root, src, "");
 }
 
@@ -141,13 +165,19 @@ T Section::convert(std::string_view key, const YAML::Node& n, Bounds b) const {
   try {
     if constexpr (std::is_integral_v<T> && !std::is_same_v<T, bool>) {
       const double d = n.as<double>();
-      if (d != std::floor(d)) throw YAML::BadConversion(n.Mark());
+      if (!std::isfinite(d) || d != std::floor(d) ||
+          std::fabs(d) > double(std::numeric_limits<T>::max()))
+        throw YAML::BadConversion(n.Mark());
       v = static_cast<T>(d);
     } else {
       v = n.as<T>();
     }
   } catch (const YAML::BadConversion&) {
     fail(key, std::string("expected ") + type_name<T>() + ", got '" + scalar_text(n) + "'");
+  }
+  if constexpr (std::is_floating_point_v<T>) {
+    // .inf and .nan are valid YAML numbers but never a valid physical input.
+    if (!std::isfinite(v)) fail(key, "expected a finite number, got '" + scalar_text(n) + "'");
   }
   if constexpr (std::is_arithmetic_v<T> && !std::is_same_v<T, bool>) {
     if (!b.contains(static_cast<double>(v)))

@@ -31,10 +31,12 @@ TEST(Schedule, DemStepLargerThanFluidStepUsesTheFluidStep) {
 }
 
 TEST(Schedule, StepsCadenceAndExchange) {
-  const Schedule s = make_schedule(
-      coupled("coupling: {exchange_interval: 2, output_interval: 0.1, checkpoint_interval: "
-              "0.25}\n"),
-      0.01, 0.003);
+  // The reader refuses these two cadences for now (see CouplingKeysAreCheckedByTheReader); the
+  // schedule itself already handles them.
+  Scene scene = coupled("coupling: {output_interval: 0.1}\n");
+  scene.coupling.exchange_interval = 2;
+  scene.coupling.checkpoint_interval = 0.25;
+  const Schedule s = make_schedule(scene, 0.01, 0.003);
   EXPECT_EQ(s.steps, 100);
   EXPECT_EQ(s.dem_substeps, 4);
   EXPECT_DOUBLE_EQ(s.dt_dem, 0.0025);
@@ -55,6 +57,26 @@ TEST(Schedule, NoCadenceByDefaultAndEndRoundsUp) {
   EXPECT_FALSE(s.checkpoint_at(4));
 }
 
+// Awkward end / dt pairs whose quotient lands a rounding error above or below a whole number:
+// both programs count with step_count, so they agree; the count is the exact ceiling.
+TEST(Schedule, StepCountOnAwkwardEndAndStep) {
+  EXPECT_EQ(step_count(0.3, 0.1), 3);  // 2.9999999999999996
+  EXPECT_EQ(step_count(0.7, 0.1), 7);  // 6.999999999999999
+  EXPECT_EQ(step_count(1.0, 0.1), 10);
+  EXPECT_EQ(step_count(0.6, 0.2), 3);     // 2.9999999999999996
+  EXPECT_EQ(step_count(1.1, 0.1), 11);    // 11.000000000000002
+  EXPECT_EQ(step_count(1e-3, 1e-4), 10);  // 10.000000000000002
+  EXPECT_EQ(step_count(0.35, 0.1), 4);    // a real fraction rounds up
+  EXPECT_EQ(step_count(0.01, 1.0), 1);    // end shorter than one step: one step
+  for (int n = 1; n <= 2000; ++n) {
+    const double dt = 1.0 / 3.0e4;
+    EXPECT_EQ(step_count(n * dt, dt), n) << n;
+    EXPECT_EQ(step_count(n * 0.1, 0.1), n) << n;
+  }
+  // make_schedule counts with the same function.
+  EXPECT_EQ(make_schedule(coupled(), 0.1, 0.003).steps, step_count(1.0, 0.1));
+}
+
 TEST(Schedule, RejectsMissingSteps) {
   EXPECT_THROW(make_schedule(coupled(), 0.0, 0.003), SceneError);
   EXPECT_THROW(make_schedule(coupled(), 0.01, -1.0), SceneError);
@@ -62,6 +84,11 @@ TEST(Schedule, RejectsMissingSteps) {
 
 TEST(Schedule, CouplingKeysAreCheckedByTheReader) {
   EXPECT_THROW(coupled("coupling: {exchange_interval: 0}\n"), SceneError);
+  EXPECT_THROW(coupled("coupling: {exchange_interval: 2}\n"), SceneError);
+  EXPECT_THROW(coupled("coupling: {checkpoint_interval: 1.0}\n"), SceneError);
+  EXPECT_EQ(coupled("coupling: {exchange_interval: 1, checkpoint_interval: 0}\n")
+                .coupling.exchange_interval,
+            1);
   EXPECT_THROW(coupled("coupling: {wait: spin}\n"), SceneError);
   EXPECT_EQ(coupled("coupling: {wait: blocking}\n").coupling.wait, "blocking");
 }

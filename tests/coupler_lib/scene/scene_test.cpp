@@ -108,5 +108,35 @@ TEST(Scene, PorosityLookupAndDemStepRuleAreChoices) {
   }
 }
 
+std::string message_of(const std::string& text) {
+  try {
+    parse(text);
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Scene, NonFiniteNumbersAreRefused) {
+  for (const char* bad : {".inf", "-.inf", ".nan", ".Inf"}) {
+    std::string text = kMinimal;
+    text.replace(text.find("1.0e-3"), 6, bad);
+    const std::string m = message_of(text);
+    EXPECT_NE(m.find("fluid.viscosity: expected a finite number"), std::string::npos) << bad << m;
+  }
+  // Beyond the range of a double: yaml-cpp cannot convert it at all.
+  std::string text = kMinimal;
+  text.replace(text.find("1.0e-3"), 6, "1e999");
+  EXPECT_NE(message_of(text).find("fluid.viscosity: expected a number, got '1e999'"),
+            std::string::npos);
+}
+
+TEST(Scene, DuplicateKeysAreRefusedWithTheirLine) {
+  const std::string m = message_of(std::string(kMinimal) + "  tau: 0.7\n");
+  EXPECT_NE(m.find("t.yaml:9: key 'tau' is given twice"), std::string::npos) << m;
+  EXPECT_NE(message_of(std::string(kMinimal) + "name: u\n").find("'name' is given twice"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace lbdem

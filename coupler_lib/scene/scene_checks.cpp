@@ -1,0 +1,97 @@
+#include "coupler_lib/scene/scene_checks.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "coupler_lib/scene/body_placement.hpp"
+#include "coupler_lib/scene/shape_catalogue.hpp"
+
+namespace lbdem {
+
+double fluid_memory_bytes(const FluidParams& fluid, bool bodies) {
+  const double cells = double(fluid.cells[0]) * fluid.cells[1] * fluid.cells[2];
+  const double value = fluid.precision == "float" ? 4 : 8;
+  return cells * (2 * 19 * value + (bodies ? 8 : 0));
+}
+
+double physical_memory_bytes() {
+  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+  return pages > 0 && page > 0 ? double(pages) * double(page) : 0;
+}
+
+namespace {
+
+std::string gib(double bytes) {
+  std::ostringstream s;
+  s.precision(3);
+  s << bytes / (1024.0 * 1024.0 * 1024.0) << " GiB";
+  return s.str();
+}
+
+void check_memory(const Scene& scene, double memory_bytes) {
+  if (!scene.fluid || !(memory_bytes > 0)) return;
+  const double need = fluid_memory_bytes(*scene.fluid, !scene.bodies.empty());
+  if (need > memory_bytes) {
+    const auto& c = scene.fluid->cells;
+    std::ostringstream m;
+    m << scene.file << ": fluid: the lattice of " << c[0] << " x " << c[1] << " x " << c[2]
+      << " cells needs at least " << gib(need) << " (" << (need / (double(c[0]) * c[1] * c[2]))
+      << " B per cell) but the nodes of this job have " << gib(memory_bytes)
+      << "; use a coarser fluid.dx, a smaller fluid.domain or precision: float";
+    throw SceneError(m.str());
+  }
+}
+
+// A body the lattice cannot see: thinner than one fluid cell along its thinnest axis of the
+// shape frame. Its porosity would never reach the solid value, so it would feel no fluid.
+void check_resolution(const Scene& scene, const std::vector<Shape>& shapes) {
+  if (!scene.coupled()) return;
+  const double dx = scene.fluid->dx;
+  for (size_t i = 0; i < scene.bodies.size(); ++i) {
+    const int k = scene.bodies[i].shape;
+    if (k < 0 || static_cast<size_t>(k) >= shapes.size()) continue;
+    const Shape& sh = shapes[static_cast<size_t>(k)];
+    double thinnest = std::numeric_limits<double>::infinity();
+    for (int d = 0; d < 3; ++d) {
+      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+      for (size_t s = 0; s < sh.clump.centers.size(); ++s) {
+        lo = std::min(lo, sh.clump.centers[s][d] - sh.clump.radii[s]);
+        hi = std::max(hi, sh.clump.centers[s][d] + sh.clump.radii[s]);
+      }
+      thinnest = std::min(thinnest, hi - lo);
+    }
+    if (thinnest < dx) {
+      std::ostringstream m;
+      m << scene.file << ": bodies: body " << i << " (shape '" << sh.name << "') is " << thinnest
+        << " m thick, thinner than one fluid cell (fluid.dx = " << dx
+        << " m): the fluid cannot resolve it; use a finer fluid.dx or a larger shape";
+      throw SceneError(m.str());
+    }
+  }
+}
+
+}  // namespace
+
+void check_whole_scene(const Scene& scene, double memory_bytes) {
+  check_memory(scene, memory_bytes);
+  const std::vector<Shape> shapes = build_scene_shapes(scene);
+  check_resolution(scene, shapes);
+  if (!scene.dem) return;
+  // The box as the DEM resolves it (dem_app/dem_setup.cpp): dem.box, else the fluid domain.
+  std::array<double, 3> lo{0, 0, 0}, hi{0, 0, 0};
+  if (scene.dem->has_box) {
+    lo = scene.dem->box_lo;
+    hi = scene.dem->box_hi;
+  } else if (scene.fluid) {
+    hi = scene.fluid->domain;
+  } else {
+    return;  // refused by the DEM's own setup with its message
+  }
+  check_body_placement(scene.file, shapes, scene.bodies, lo, hi, *scene.dem);
+}
+
+}  // namespace lbdem

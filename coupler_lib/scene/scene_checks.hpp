@@ -1,0 +1,28 @@
+#pragma once
+// The checks of a whole scene that need more than one section: its shapes built (STL files read
+// and voxelized), its bodies placed in the box, resolvable by the fluid lattice, and the memory
+// the fluid lattice needs. Both programs run them at start-up on every rank, so fluid_app and
+// dem_app accept and refuse exactly the same scenes with the same message, and a refusal ends
+// the job cleanly before any coupling starts (coupler_lib/app/run_app.hpp).
+#include <cstdint>
+
+#include "coupler_lib/scene/scene.hpp"
+
+namespace lbdem {
+
+// Bytes of memory the fluid lattice of `fluid` needs, all ranks together: two copies of the 19
+// populations per cell (FluidSolver's bytes_per_cell_update) plus the porosity field (8 B) when
+// the scene has bodies. A lower bound: halos, outputs and the DEM come on top.
+double fluid_memory_bytes(const FluidParams& fluid, bool bodies);
+
+// Throws SceneError for: a shape that cannot be built (unreadable or degenerate STL, a body
+// thinner than the voxel spacing), a body outside the box, larger than it, through a wall or
+// overlapping another body (body_placement.hpp), a body thinner than one fluid cell in a coupled
+// scene, and a fluid lattice that needs more than `memory_bytes` (the physical memory of the
+// job's nodes; 0: not checked).
+void check_whole_scene(const Scene& scene, double memory_bytes);
+
+// Physical memory of this machine in bytes (sysconf).
+double physical_memory_bytes();
+
+}  // namespace lbdem
