@@ -32,22 +32,22 @@ def main():
     if (any(stability.CASES[n][2] == "vs_base" for n in names) and stability.BASE not in names
             and not (args.reuse_base and stability.trace(stability.BASE))):
         names.insert(0, stability.BASE)
+    os.makedirs(args.out, exist_ok=True)
     rows, ok = [], True
     for name in names:
-        r = stability.study_case(args.build, name, args.timeout)
+        r = stability.study_case(args.build, name, args.timeout, args.out)
         good = r["outcome"] == r["expected"]
         ok = ok and good
-        err = "" if r["error"] is None else f"{r['error']:.3g} ({r['what']})"
+        err = r["what"] if r["error"] is None else f"{r['error']:.3g} ({r['what']})"
         print(f"{name}: {r['outcome']} (expected {r['expected']}){'' if good else ' MISMATCH'}; "
               f"wall {r['wall_s']:.1f} s; {err} {r['message']}", flush=True)
         rows.append(r)
     md = ["| case | ranks | outcome | error | wall (s) | message |", "|---|---|---|---|---|---|"]
     for r in rows:
-        err = "" if r["error"] is None else f"{r['error']:.3g} ({r['what']})"
+        err = r["what"] if r["error"] is None else f"{r['error']:.3g} ({r['what']})"
         msg = r["message"].replace("|", "/")
         md.append(f"| {r['case']} | {r['ranks']} | {r['outcome']} | {err} | {r['wall_s']:.1f} | "
                   f"{msg} |")
-    os.makedirs(args.out, exist_ok=True)
     with open(os.path.join(args.out, "stability.md"), "w") as out:
         out.write("\n".join(md) + "\n")
     print("\n".join(md))

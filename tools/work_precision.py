@@ -93,8 +93,9 @@ def main():
     kept = [r for r in old if not any((r["case"], r["n"], r["tau"], r["end_s"], r["ranks"]) ==
                                       (q["case"], q["n"], q["tau"], q["end_s"], q["ranks"])
                                       for q in rows)]
-    summaries = wp.analyse(rows)
-    wp.write_csv(table, kept + rows)
+    everything = kept + rows
+    summaries = wp.analyse(everything)
+    wp.write_csv(table, everything)
     md = wp.markdown(summaries)
     with open(os.path.join(args.out, "work_precision.md"), "w") as out:
         out.write(md)
@@ -103,8 +104,12 @@ def main():
     print(md)
     print(f"wrote {table}, work_precision.md and one PNG per case in {args.out}")
     ok = True
+    for case in sorted({c for c, _ in summaries}):
+        if not os.path.getsize(os.path.join(args.out, f"{case}.png")):
+            print(f"FAILED: empty plot for {case}")
+            ok = False
     if args.require_decrease:
-        for (case, tau), s in summaries.items():
+        for (case, tau), s in wp.analyse(rows).items():
             errs = [r["error"] for r in s["rows"]]
             if len(errs) < 2 or any(b >= a for a, b in zip(errs, errs[1:])):
                 print(f"FAILED: {case} tau {tau:g}: the error does not fall with resolution: "

@@ -58,7 +58,7 @@ def rung_scene(base_path, n, tau, out_dir, end=None):
     f["domain"] = [max(1, round(v / dx)) * dx for v in old]
     f["dx"] = dx
     f["tau"] = tau
-    scene["name"] = f"{scene['name']}_n{n}_tau{tau:g}"
+    scene["name"] = f"{scene['name']}_n{n:g}_tau{tau:g}"
     if end:
         scene["time"]["end"] = end
     scene["dem"].setdefault("output", {})["directory"] = out_dir
@@ -179,6 +179,8 @@ def error_at(ladder, budget, slope, c_err, p, c_wall):
             return math.exp((1 - w) * math.log(a["error"]) + w * math.log(b["error"])), "measured"
     if p <= 0:
         return ladder[-1]["error"], "last rung"
+    if slope >= 0:
+        return None, "not extrapolated: the error does not fall with n"
     n = (budget / math.exp(c_wall)) ** (1 / p)
     return math.exp(c_err) * n ** slope, f"extrapolated (n = {n:.3g})"
 
@@ -221,7 +223,7 @@ def plot(case, summaries, png):
                           label=f"tau = {tau:g}")
         for r in rows:
             ax.annotate(f"n={r['n']:g}", (r["wall_s"], r["error"]), fontsize=7)
-        if "next" in s:
+        if "next" in s and s["order"] > 0:
             nx = s["next"]
             ax.loglog([rows[-1]["wall_s"], nx["wall_s"]], [rows[-1]["error"], nx["error"]], "--",
                       color=line.get_color())
@@ -253,11 +255,12 @@ def markdown(summaries):
         if "order" not in s:
             continue
         nx = s["next"]
+        nx_err = f"{100 * nx['error']:.2g} %" if s["order"] > 0 else "not extrapolated"
         cells = []
         for label, _ in BUDGETS:
             e, how = s["budget"][label]
-            cells.append("-" if e is None else f"{100 * e:.2g} % ({how})")
+            cells.append(how if e is None else f"{100 * e:.2g} % ({how})")
         lines.append(f"| {case} | {tau:g} | {s['order']:.2f} | {s['cost_power']:.2f} | "
-                     f"{nx['n']:.3g}, {nx['wall_s']:.3g} s, {100 * nx['error']:.2g} % | "
+                     f"{nx['n']:.3g}, {nx['wall_s']:.3g} s, {nx_err} | "
                      + " | ".join(cells) + " |")
     return "\n".join(lines) + "\n"
