@@ -232,7 +232,8 @@ def plot(case, summaries, png):
         ax.axvline(b, color="grey", lw=0.5)
     ax.set_xlabel("wall time of the run [s] (this machine)")
     ax.set_ylabel("relative error against the reference")
-    ax.set_title(f"{case}: error against run time (dashed: next rung, extrapolated)")
+    ax.set_title(f"{case}: error against run time\n(dashed, open marker: next rung, extrapolated)",
+                 fontsize=10)
     ax.grid(True, which="both", alpha=0.3)
     ax.legend()
     fig.tight_layout()
