@@ -4,6 +4,8 @@
 #include <iomanip>
 #include <sstream>
 
+#include "coupler_lib/scene/coupled_limits.hpp"
+
 namespace lbdem {
 
 std::uint64_t fnv1a(const std::string& bytes) {
@@ -43,6 +45,7 @@ Scene parse_scene(Section root, std::uint64_t hash) {
   if (!sc.fluid && !sc.dem)
     throw SceneError(sc.file + ": the scene has neither a 'fluid' nor a 'dem' section");
   if (sc.dem) resolve_lubrication(sc.dem->lubrication, sc.fluid ? &*sc.fluid : nullptr, sc.file);
+  check_coupled_limits(sc);
   return sc;
 }
 
