@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
-# Installs the dependencies (Debian 12, as root), builds, runs the default scene (27 cubes
-# settling in a periodic box, fluid 1 rank : DEM 1 rank) and plots its settling velocity.
-# Output: runs/demo/ (ParaView: settling_cubes_volume.xdmf, settling_cubes_bodies.xdmf;
-# CSV: settling_cubes_bodies.csv, settling_cubes_series.csv; plot: settling_cubes_settling.png).
+# The main job: installs the dependencies (Debian 12, as root), builds, and runs the small
+# hindered-settling study (configs/study/small.yaml: 27 spheres and 27 volume-equivalent cubes
+# at phi = 0.1, 0.2, 0.3 in a triply periodic box, plus one single-body run per shape for u_T;
+# fluid 1 rank : DEM 1 rank per run; resumable). Output: runs/study/small/ (summary.csv,
+# settling.png, rdf.png, correlation.png, vacf.png; per run the ParaView files). docs/study.md.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/setup_debian.sh
-cmake -S . -B build -DLBDEM_TESTS=OFF
-cmake --build build -j"$(nproc)"
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-scene=configs/demo/settling_cubes.yaml
-mpirun --oversubscribe -np 1 build/fluid_app/fluid_app "$scene" : -np 1 build/dem_app/dem_app "$scene"
-/usr/bin/python3 tools/plot_settling.py "$scene"
+# Tests stay on so that tools/run_tests.sh can reuse this build directory in either order.
+cmake -S . -B build -DLBDEM_TESTS=ON
+cmake --build build -j"$(nproc)" --target fluid_app dem_app
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+/usr/bin/python3 tools/study.py configs/study/small.yaml --build build "$@"
