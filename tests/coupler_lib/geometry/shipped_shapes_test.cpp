@@ -3,13 +3,13 @@
 // with the header (the numbers in the README); the STL files are closed and oriented.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <numbers>
-#include <cmath>
-#include <cstdio>
-#include <algorithm>
 #include <vector>
 
 #include "coupler_lib/geometry/clump_generator.hpp"
@@ -83,7 +83,9 @@ SampledQuality sampled_quality(const Clump& c, double volume, Inside inside, Dis
     last[d].assign(std::size_t(n) * n, -1);
   }
   const auto line = [&](int d, int i, int j, int k) {
-    return d == 0 ? std::size_t(k) * n + j : d == 1 ? std::size_t(k) * n + i : std::size_t(j) * n + i;
+    return d == 0   ? std::size_t(k) * n + j
+           : d == 1 ? std::size_t(k) * n + i
+                    : std::size_t(j) * n + i;
   };
   for (int k = 0; k < n; ++k)
     for (int j = 0; j < n; ++j)
@@ -157,9 +159,10 @@ TEST(ShippedShapes, DISABLED_ClumpHeadersAgreeWithAnIndependentSampling) {
                                   : sampled_quality(c, std::numbers::pi / 6, in_sphere, to_sphere);
     const double vol = std::stod(h.at("volume_error"));
     const double dev = std::stod(h.at("max_surface_deviation"));
-    std::printf("%s: volume error header %.4f, sampled %.4f; deviation header %.4f, sampled "
-                "%.4f (sample spacing %.4f)\n",
-                name, vol, q.volume_error, dev, q.max_deviation, q.h);
+    std::printf(
+        "%s: volume error header %.4f, sampled %.4f; deviation header %.4f, sampled "
+        "%.4f (sample spacing %.4f)\n",
+        name, vol, q.volume_error, dev, q.max_deviation, q.h);
     // Two samplings of the same sets differ by the boundary layer they resolve differently.
     EXPECT_NEAR(q.volume_error, vol, 0.01) << name;
     EXPECT_NEAR(q.max_deviation, dev, 1.5 * q.h) << name;

@@ -65,8 +65,8 @@ TEST(ForceTorque, AccelerationsMatchNewtonAndEuler) {
   const double seconds = timer.seconds();
   test::report("force and torque, 4 bodies", "a vs F/m relative", lin, 1e-9, seconds);
   test::report("force and torque, 4 bodies",
-               "dw/dt vs I^-1 (T - w x I w) relative (central difference over 40 steps)", ang,
-               1e-4, seconds);
+               "dw/dt vs I^-1 (T - w x I w) relative (central difference over 40 steps)", ang, 1e-4,
+               seconds);
   EXPECT_LT(lin, 1e-9);
   EXPECT_LT(ang, 1e-4);
 }

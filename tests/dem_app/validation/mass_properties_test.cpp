@@ -37,8 +37,8 @@ TEST(ShapeMassProperties, DISABLED_CuboidMatchesClosedForm) {
     const Eigen::Matrix3d engine_space = rot * engine.body_inertia(s.id) * rot.transpose();
     inertia_error = std::max(inertia_error, (engine_space - exact).norm() / exact.norm());
   }
-  test::report("cuboid mass properties, 4 bodies", "engine mass vs rho a b c relative",
-               mass_error, 1e-6, 0);
+  test::report("cuboid mass properties, 4 bodies", "engine mass vs rho a b c relative", mass_error,
+               1e-6, 0);
   test::report("cuboid mass properties, 4 bodies", "engine inertia vs m/12 (b^2+c^2, ...) relative",
                inertia_error, 1e-6, 0);
   EXPECT_LT(mass_error, 1e-6);

@@ -74,8 +74,8 @@ class WallTimer {
 
 // "[validation] <case>: <reference> error <e>, tolerance <tol> (run time <t> s, <n> ranks)" on
 // rank 0; tools/validation_table.py collects these lines into docs/validation-table.md.
-inline void report(const std::string& name, const std::string& what, double error,
-                   double tolerance, double seconds) {
+inline void report(const std::string& name, const std::string& what, double error, double tolerance,
+                   double seconds) {
   if (world_rank() == 0)
     std::printf("[validation] %s: %s error %.3e, tolerance %.1e (run time %.2f s, %d rank%s)\n",
                 name.c_str(), what.c_str(), error, tolerance, seconds, world_size(),

@@ -86,10 +86,10 @@ struct DragResult {
 // Sphere of radius a (cells) held fixed at the centre of a periodic box of n cells, flow
 // driven by a uniform force density g along x until the drag is steady (relative change
 // below 1e-4 per 100 steps; a slowly decaying acoustic oscillation keeps it above 1e-5 for
-// more than 6000 steps at L = 24, tau = 1). K = F_t / (6 pi mu a U) with U the domain-averaged (superficial)
-// velocity and F_t the total force per sphere (reference-data.md). The load the body receives
-// (penalization loads, docs/method-loads.md) includes the force on the fluid it covers, so at
-// steady state the momentum balance of the box gives F_t = F_d = g L^3 exactly; the older
+// more than 6000 steps at L = 24, tau = 1). K = F_t / (6 pi mu a U) with U the domain-averaged
+// (superficial) velocity and F_t the total force per sphere (reference-data.md). The load the body
+// receives (penalization loads, docs/method-loads.md) includes the force on the fluid it covers, so
+// at steady state the momentum balance of the box gives F_t = F_d = g L^3 exactly; the older
 // momentum exchange over boundary links misses that part and needs F_t = F_ME / (1 - phi).
 DragResult stokes_drag(double a, int n, double tau, int max_steps) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -155,9 +155,10 @@ TEST(LatticeCoupling, StokesDragOfPeriodicSphereArrayCoarse) {
   // applied to the whole box (steady momentum balance, to the steadiness criterion).
   EXPECT_NEAR(r.balance, 1.0, 1e-3);
   EXPECT_NEAR(r.k / r.k_sangani, 1.0, 0.10);
-  std::printf("[validation] Stokes drag, sphere array a = 4, L = 24: K vs Sangani-Acrivos "
-              "relative error %.3e, tolerance 1.0e-01 (run time %.2f s, 1 rank)\n",
-              std::abs(r.k / r.k_sangani - 1), r.seconds);
+  std::printf(
+      "[validation] Stokes drag, sphere array a = 4, L = 24: K vs Sangani-Acrivos "
+      "relative error %.3e, tolerance 1.0e-01 (run time %.2f s, 1 rank)\n",
+      std::abs(r.k / r.k_sangani - 1), r.seconds);
   EXPECT_NEAR(r.balance_me, 1.0, 0.02);
 }
 
