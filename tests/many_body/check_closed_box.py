@@ -102,6 +102,13 @@ def main():
         on_floor = int((x[-1][:, 2] - r <= CONTACT_GAP * d).sum())
         check(supported.all(), f"every body rests on the floor or another body "
               f"({on_floor} on the floor, {int((~supported).sum())} unsupported)")
+    # The same numbers as lines for tools/validation_table.py.
+    tag = f"[validation] closed box, 27 spheres, ranks {a.ranks}:"
+    run_time = f"(run time {wall:.1f} s, {fr + dr} ranks)"
+    print(f"{tag} largest overlap / d error {max(pair, r - wall_gap) / d:.3e}, tolerance "
+          f"{MAX_OVERLAP:.1e} {run_time}")
+    print(f"{tag} mean settling speed / Stokes speed, band error {ratio:.3f}, tolerance "
+          f"{SPEED_BAND[0]}-{SPEED_BAND[1]} {run_time}")
     print(f"closed box, 27 spheres, ranks {a.ranks}: wall time {wall:.1f} s")
     return 1 if failures else 0
 
