@@ -23,7 +23,7 @@ import sys
 HEADER = re.compile(r"^\d+/\d+ Test: (\S+)", re.M)
 STATUS = re.compile(r"^Test (Passed|Failed|Skipped|Not Run)", re.M)
 COMMAND = re.compile(r"^Command: (.*)$", re.M)
-GENERIC = re.compile(r"^\[validation\] (?P<case>[^:]+): (?P<ref>.*?) error (?P<err>\S+), "
+GENERIC = re.compile(r"^\[validation\] (?P<case>.+?): (?P<ref>.*?) error (?P<err>\S+), "
                      r"tolerance (?P<tol>[^ ]+) \(run time (?P<wall>[\d.]+) s", re.M)
 FLUID = re.compile(r"^validation (?P<case>\S+): cells (?P<cells>\S+), .*L2 relative velocity "
                    r"error (?P<err>[-+.\de]+),.*run time (?P<wall>[\d.e+]+) s", re.M)
