@@ -55,10 +55,16 @@ TEST(Engine, BuoyancyReducesGravityExactly) {
   LammpsEngine e(MPI_COMM_WORLD, test::setup_from_scene(test::scene_from_text(text)));
   e.run(5000);
   const double t = e.time(), g = 9.81 * (1.0 - 1000.0 / 2500.0);
+  // Checked on the rank that owns the body; exactly one rank must own it.
+  int found = 0;
   for (const auto& s : e.owned_states(0)) {
     EXPECT_NEAR(s.x[2], 0.05 - 0.5 * g * t * t, 1e-12);
     EXPECT_NEAR(s.v[2], -g * t, 1e-12);
+    ++found;
   }
+  int total = 0;
+  MPI_Allreduce(&found, &total, 1, MPI_INT, MPI_SUM, MPI_COMM_WORLD);
+  EXPECT_EQ(total, 1);
 }
 
 }  // namespace

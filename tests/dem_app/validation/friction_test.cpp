@@ -60,7 +60,7 @@ TEST(Friction, SticksBelowFrictionAngle) {
     const double drift = std::abs(m.x.back() - m.x.front());
     char name[64];
     std::snprintf(name, sizeof name, "friction stick theta=%.0f deg", theta);
-    test::report(name, "drift over 0.2 s (m), absolute", drift, timer.seconds());
+    test::report(name, "drift over 0.2 s (m), absolute", drift, 5e-5, timer.seconds());
     EXPECT_LT(drift, 5e-5) << theta;
     EXPECT_LT(std::abs(slope(m.t, m.x)), 1e-4) << theta;  // mean speed, m/s
   }
@@ -78,7 +78,7 @@ TEST(Friction, SlidesWithCoulombAccelerationAbove) {
     std::snprintf(name, sizeof name, "friction slide theta=%.0f deg", theta);
     std::snprintf(what, sizeof what, "a = %.4f m/s^2 vs g(sin - mu cos) = %.4f, relative", measured,
                   expected);
-    test::report(name, what, error, timer.seconds());
+    test::report(name, what, error, 1e-2, timer.seconds());
     EXPECT_LT(error, 1e-2) << theta;
   }
 }

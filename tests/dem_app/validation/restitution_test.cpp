@@ -51,7 +51,7 @@ TEST_P(Restitution, MeasuredMatchesRequested) {
   std::snprintf(name, sizeof name, "restitution e=%.2f v=%.2f m/s dt=%.2f t_R", c.e, c.speed,
                 c.dt_fraction);
   std::snprintf(what, sizeof what, "measured e %.5f, relative", e_measured);
-  test::report(name, what, error, timer.seconds());
+  test::report(name, what, error, c.tolerance, timer.seconds());
   // The map is exact for the continuous Hertz-Tsuji law; what remains is the time
   // discretization of the contact: up to 0.8 % at the paper's dt = 0.05 t_R (a contact then
   // lasts ~30-60 steps), below 0.2 % at 0.01 t_R, 0.05 % at 0.002 t_R (measured).

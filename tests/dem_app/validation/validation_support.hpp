@@ -3,6 +3,8 @@
 // every rank, and the one-line report (error and run time) each case prints.
 #include <mpi.h>
 
+#include <Eigen/Geometry>
+
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -52,6 +54,14 @@ inline int world_size() {
   return s;
 }
 
+// Inertia tensor of a homogeneous cuboid of mass m and edges e about its centre, in the frame of
+// its edges (the textbook m / 12 (b^2 + c^2), ...): the independent reference of the mass
+// properties the engine derives from the shape.
+inline Eigen::Matrix3d cuboid_inertia(double m, const Eigen::Vector3d& e) {
+  const Eigen::Vector3d s = e.cwiseProduct(e);
+  return Eigen::Vector3d(s[1] + s[2], s[0] + s[2], s[0] + s[1]).asDiagonal() * (m / 12.0);
+}
+
 class WallTimer {
  public:
   double seconds() const {
@@ -62,11 +72,14 @@ class WallTimer {
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
-// "[validation] <case>: <what> error <e> (run time <t> s, <n> ranks)" on rank 0.
-inline void report(const std::string& name, const std::string& what, double error, double seconds) {
+// "[validation] <case>: <reference> error <e>, tolerance <tol> (run time <t> s, <n> ranks)" on
+// rank 0; tools/validation_table.py collects these lines into docs/validation-table.md.
+inline void report(const std::string& name, const std::string& what, double error, double tolerance,
+                   double seconds) {
   if (world_rank() == 0)
-    std::printf("[validation] %s: %s error %.3e (run time %.2f s, %d rank%s)\n", name.c_str(),
-                what.c_str(), error, seconds, world_size(), world_size() > 1 ? "s" : "");
+    std::printf("[validation] %s: %s error %.3e, tolerance %.1e (run time %.2f s, %d rank%s)\n",
+                name.c_str(), what.c_str(), error, tolerance, seconds, world_size(),
+                world_size() > 1 ? "s" : "");
 }
 
 }  // namespace lbdem::test

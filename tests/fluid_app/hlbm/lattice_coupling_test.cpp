@@ -78,14 +78,19 @@ double sangani_acrivos(double phi) {
 }
 
 struct DragResult {
-  double k = 0, k_hasimoto = 0, k_sangani = 0, balance = 0, seconds = 0;
+  double k = 0, k_hasimoto = 0, k_sangani = 0, balance = 0, balance_me = 0, seconds = 0;
   int steps = 0;
+  bool steady = false;
 };
 
 // Sphere of radius a (cells) held fixed at the centre of a periodic box of n cells, flow
 // driven by a uniform force density g along x until the drag is steady (relative change
-// below 1e-5 per 100 steps). K = F_t / (6 pi mu a U) with F_t = F_ME / (1 - phi) the total
-// force per sphere (reference-data.md) and U the domain-averaged (superficial) velocity.
+// below 1e-4 per 100 steps; a slowly decaying acoustic oscillation keeps it above 1e-5 for
+// more than 6000 steps at L = 24, tau = 1). K = F_t / (6 pi mu a U) with U the domain-averaged
+// (superficial) velocity and F_t the total force per sphere (reference-data.md). The load the body
+// receives (penalization loads, docs/method-loads.md) includes the force on the fluid it covers, so
+// at steady state the momentum balance of the box gives F_t = F_d = g L^3 exactly; the older
+// momentum exchange over boundary links misses that part and needs F_t = F_ME / (1 - phi).
 DragResult stokes_drag(double a, int n, double tau, int max_steps) {
   const auto t0 = std::chrono::steady_clock::now();
   const FluidParams p = testing_fluid::lattice_params(n, n, n, tau);
@@ -97,16 +102,22 @@ DragResult stokes_drag(double a, int n, double tau, int max_steps) {
   bodies.update({&st, 1});
   const double g = 1e-6;  // lattice force density: U ~ 1e-4, Re << 1
   s.set_uniform_force({g, 0, 0});
-  double previous = 0, fx = 0;
+  double previous = 0, fd = 0, fme = 0;
+  DragResult r;
   int step = 0;
   while (step < max_steps) {
     s.step();
+    // penalty_loads must be read after every step (it differences the covered momentum).
+    fd = bodies.penalty_loads(step).at(0).f[0] / p.units.force();
     ++step;
     if (step % 100 != 0) continue;
-    fx = ME_force(bodies, s).x() / p.units.force();
-    if (std::abs(fx - previous) < 1e-5 * std::abs(fx)) break;
-    previous = fx;
+    if (std::abs(fd - previous) < 1e-4 * std::abs(fd)) {
+      r.steady = true;
+      break;
+    }
+    previous = fd;
   }
+  fme = ME_force(bodies, s).x() / p.units.force();
   std::vector<double> rho, u;
   s.macroscopic(rho, u);
   double ux = 0, mass = 0;
@@ -118,19 +129,20 @@ DragResult stokes_drag(double a, int n, double tau, int max_steps) {
   const double superficial = ux / cells;
   const double phi = 4.0 / 3.0 * std::numbers::pi * a * a * a / cells;
   const double mu = (mass / cells) * (tau - 0.5) / 3.0;
-  DragResult r;
   r.steps = step;
-  r.k = fx / (1 - phi) / (6 * std::numbers::pi * mu * a * superficial);
+  r.k = fd / (6 * std::numbers::pi * mu * a * superficial);
   r.k_hasimoto = hasimoto_single(a / n);
   r.k_sangani = sangani_acrivos(phi);
-  r.balance = fx / (g * cells * (1 - phi));  // momentum balance: ~1 at steady state
+  r.balance = fd / (g * cells);                  // F_d / (g L^3): 1 at steady state
+  r.balance_me = fme / (g * cells * (1 - phi));  // F_ME / (g L^3 (1 - phi))
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::printf(
       "Stokes drag a = %.1f, L = %d, tau = %.2f, phi = %.4f: K = %.4f | Hasimoto %.4f "
-      "(%+.2f %%) | Sangani-Acrivos %.4f (%+.2f %%) | F_ME / (g L^3 (1-phi)) = %.4f | "
-      "%d steps, %.1f s\n",
+      "(%+.2f %%) | Sangani-Acrivos %.4f (%+.2f %%) | F_d / (g L^3) = %.6f | "
+      "F_ME / (g L^3 (1-phi)) = %.4f | %s after %d steps, %.1f s\n",
       a, n, tau, phi, r.k, r.k_hasimoto, 100 * (r.k / r.k_hasimoto - 1), r.k_sangani,
-      100 * (r.k / r.k_sangani - 1), r.balance, r.steps, r.seconds);
+      100 * (r.k / r.k_sangani - 1), r.balance, r.balance_me, r.steady ? "steady" : "NOT steady",
+      r.steps, r.seconds);
   return r;
 }
 
@@ -138,14 +150,16 @@ TEST(LatticeCoupling, StokesDragOfPeriodicSphereArrayCoarse) {
   // a = 4 cells, L = 24: phi = 0.019. HLBM's effective radius differs from the nominal one
   // by a fraction of a cell, so at this resolution K is expected within ~10 %.
   const DragResult r = stokes_drag(4.0, 24, 1.0, 6000);
+  ASSERT_TRUE(r.steady) << "drag still changing after " << r.steps << " steps";
+  // Both definitions of the total force per sphere agree: the body's load equals the force
+  // applied to the whole box (steady momentum balance, to the steadiness criterion).
+  EXPECT_NEAR(r.balance, 1.0, 1e-3);
   EXPECT_NEAR(r.k / r.k_sangani, 1.0, 0.10);
-  EXPECT_NEAR(r.balance, 1.0, 0.02);
-}
-
-// Finer runs for the report (slow on a shared machine):
-//   hlbm_unit_tests --gtest_also_run_disabled_tests --gtest_filter='*StokesDragFine*'
-TEST(LatticeCoupling, DISABLED_StokesDragFine) {
-  for (double tau : {0.8, 1.0}) stokes_drag(8.0, 48, tau, 20000);
+  std::printf(
+      "[validation] Stokes drag, sphere array a = 4, L = 24: K vs Sangani-Acrivos "
+      "relative error %.3e, tolerance 1.0e-01 (run time %.2f s, 1 rank)\n",
+      std::abs(r.k / r.k_sangani - 1), r.seconds);
+  EXPECT_NEAR(r.balance_me, 1.0, 0.02);
 }
 
 }  // namespace
