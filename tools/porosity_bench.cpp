@@ -21,8 +21,8 @@
 #include <string>
 #include <vector>
 
-#include "coupler_lib/geometry/build_shape.hpp"
 #include "coupler_lib/scene/scene.hpp"
+#include "coupler_lib/scene/shape_catalogue.hpp"
 #include "fluid_app/hlbm/body_field.hpp"
 
 namespace {
@@ -141,9 +141,7 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "porosity_bench: %s needs a fluid section and bodies\n", argv[1]);
       return 2;
     }
-    std::vector<lbdem::Shape> shapes;
-    for (const auto& p : scene.shapes)
-      shapes.push_back(lbdem::build_shape(p, lbdem::shape_voxel_spacing(p, scene.fluid)));
+    const std::vector<lbdem::Shape> shapes = lbdem::build_scene_shapes(scene);
     const auto& c = scene.fluid->cells;
     std::printf("# porosity_bench %s: %d x %d x %d cells, %d updates (CPU time of the thread)\n",
                 argv[1], c[0], c[1], c[2], updates);
