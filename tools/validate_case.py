@@ -236,13 +236,13 @@ def cmd_rotation(args):
 def cmd_momentum(args):
     """Momentum audit of a triply periodic run (fluid_app's <name>_momentum.csv)."""
     fr, dr = (int(x) for x in args.ranks.split(":"))
-    wall, _ = coupled_case.run(args.build, args.scene, fr, dr)
-    _, trace = coupled_case.scene_info(args.scene)
+    wall, _ = run.run(args.build, args.scene, fr, dr)
+    trace = io.trace_path(args.scene)
     path = trace[: -len("_bodies.csv")] + "_momentum.csv"
     # From the first coupled step on: the DEM's set-up reports the bodies' starting velocity
     # with half a substep of gravity but not of the buoyancy force (LAMMPS's rigid set-up), a
     # one-time offset of W dt_DEM / 2 that the step-0 row would carry into every comparison.
-    rows = [r for r in coupled_case.read_series(path) if r["step"] >= 1]
+    rows = [r for r in io.read_rows(path) if r["step"] >= 1]
     axes = ("x", "y", "z")
 
     def total(r, a):
@@ -258,7 +258,7 @@ def cmd_momentum(args):
           f"largest applied impulse {applied:.4e} N s; largest change of fluid + bodies - applied "
           f"{worst:.3e} N s = {error:.2e} of the body momentum; ranks {args.ranks}, wall time "
           f"{wall:.1f} s")
-    s, _ = coupled_case.scene_info(args.scene)
+    s = io.load_scene(args.scene)
     append_row(case_name(args), "", s["fluid"]["tau"], "momentum imbalance / body momentum", 0,
                f"{error:.3g}", f"{error:.3g}", wall, args.ranks)
     if steps < args.min_steps:
