@@ -105,7 +105,8 @@ def cmd_peak(args):
     after = min(v for _, v in speeds[i_peak:])
     drop = (result - after) / abs(result)
     print(f"peak: at t = {t_peak:.4g} s of {rows[-1]['time']:.4g} s; the speed then falls to "
-          f"{after:.5g} m/s ({100 * drop:.2f} % below the peak, bound {100 * args.min_drop:.2f} %); "
+          f"{after:.5g} m/s ({100 * drop:.2f} % below the peak, bound "
+          f"{100 * args.min_drop:.2f} %); "
           f"centre height {rows[0]['z']:.4g} -> {rows[-1]['z']:.4g} m")
     failed = report(case_name(args), args.scene, "u_max (m/s)", args.reference, result, wall,
                     args.ranks, args.tolerance)
