@@ -84,10 +84,11 @@ FluidParams parse_fluid(Section& s) {
   p.tau = s.get<double>("tau", 0.6, "BGK relaxation time", Bounds::above(0.5));
   p.precision = s.choice("precision", "double", {"double", "float"}, "floating-point type");
   p.porosity_lookup = s.choice(
-      "porosity_lookup", "trilinear", {"trilinear", "nearest"},
-      "how a node reads a body's reference porosity: trilinear (d continuous in the pose) or "
-      "nearest (the paper's nearest voxel per stencil point; a third narrower band, d in steps "
-      "of 1/19, costlier update: docs/performance.md)");
+      "porosity_lookup", "nearest", {"nearest", "trilinear"},
+      "how a node reads a body's smoothed reference porosity: nearest (the paper's nearest "
+      "voxel; narrower band, d in steps of 1/19, closer settling speeds: docs/validation.md; "
+      "with loads: momentum_exchange it misses links at rotated edges: docs/performance.md) "
+      "or trilinear (d continuous in the pose)");
   for (int d = 0; d < 3; ++d) {
     const double n = p.domain[d] / p.dx;
     p.cells[d] = static_cast<int>(std::lround(n));
