@@ -5,12 +5,12 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <sstream>
 #include <stdexcept>
 
 #include "coupler_lib/output/atomic_file.hpp"
 #include "coupler_lib/output/gather.hpp"
 #include "coupler_lib/output/hdf5_handle.hpp"
+#include "coupler_lib/output/xdmf.hpp"
 
 namespace lbdem {
 
@@ -103,47 +103,35 @@ void BodySnapshotWriter::write(const std::vector<BodyState>& owned, double time)
 
 void BodySnapshotWriter::write_xdmf() const {
   // Rewritten whole after each snapshot, so a partial run is always readable.
-  std::ostringstream x;
-  {
-    x << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
-      << "  <Grid Name=\"bodies\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-    for (size_t k = 0; k < times_.size(); ++k) {
-      const long n = sizes_[k];
-      const std::string g = h5_name_ + ":/" + group_name(static_cast<int>(k)) + "/";
-      auto item = [&](const char* set, int cols, const char* type, int bytes) {
-        x << "     <DataItem Dimensions=\"" << n;
-        if (cols > 1) x << " " << cols;
-        x << "\" NumberType=\"" << type << "\" Precision=\"" << bytes << "\" Format=\"HDF\">" << g
-          << set << "</DataItem>\n";
-      };
-      auto attribute = [&](const char* name, const char* kind, int cols, const char* type,
-                           int bytes) {
-        x << "    <Attribute Name=\"" << name << "\" AttributeType=\"" << kind
-          << "\" Center=\"Node\">\n";
-        item(name, cols, type, bytes);
-        x << "    </Attribute>\n";
-      };
-      x << "   <Grid Name=\"bodies_" << k << "\" GridType=\"Uniform\">\n"
-        << "    <Time Value=\"" << times_[k] << "\"/>\n"
-        << "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n
-        << "\" NodesPerElement=\"1\"/>\n"
-        << "    <Geometry GeometryType=\"XYZ\">\n";
-      item("position", 3, "Float", 8);
-      x << "    </Geometry>\n";
-      attribute("velocity", "Vector", 3, "Float", 8);
-      attribute("angular_velocity", "Vector", 3, "Float", 8);
-      attribute("axis_x", "Vector", 3, "Float", 8);
-      attribute("axis_y", "Vector", 3, "Float", 8);
-      attribute("axis_z", "Vector", 3, "Float", 8);
-      attribute("rotation", "Tensor", 9, "Float", 8);
-      attribute("orientation", "Matrix", 4, "Float", 8);
-      attribute("id", "Scalar", 1, "Int", 8);
-      attribute("shape", "Scalar", 1, "Int", 4);
-      x << "   </Grid>\n";
-    }
-    x << "  </Grid>\n </Domain>\n</Xdmf>\n";
+  std::vector<XdmfGrid> grids;
+  for (size_t k = 0; k < times_.size(); ++k) {
+    const long n = sizes_[k];
+    const std::string g = h5_name_ + ":/" + group_name(static_cast<int>(k)) + "/";
+    auto array = [&](const char* set, long cols, const char* type, int bytes) {
+      std::vector<long> dims{n};
+      if (cols > 1) dims.push_back(cols);
+      return XdmfArray{dims, type, bytes, g + set};
+    };
+    XdmfGrid grid{"bodies_" + std::to_string(k),
+                  times_[k],
+                  XdmfPoints{n, array("position", 3, "Float", 8)},
+                  {}};
+    auto attribute = [&](const char* name, const char* kind, long cols, const char* type,
+                         int bytes) {
+      grid.attributes.push_back({name, kind, array(name, cols, type, bytes)});
+    };
+    attribute("velocity", "Vector", 3, "Float", 8);
+    attribute("angular_velocity", "Vector", 3, "Float", 8);
+    attribute("axis_x", "Vector", 3, "Float", 8);
+    attribute("axis_y", "Vector", 3, "Float", 8);
+    attribute("axis_z", "Vector", 3, "Float", 8);
+    attribute("rotation", "Tensor", 9, "Float", 8);
+    attribute("orientation", "Matrix", 4, "Float", 8);
+    attribute("id", "Scalar", 1, "Int", 8);
+    attribute("shape", "Scalar", 1, "Int", 4);
+    grids.push_back(std::move(grid));
   }
-  write_file_atomically(xdmf_path_, x.str());
+  write_file_atomically(xdmf_path_, xdmf_series("bodies", grids));
 }
 
 EnergySeries::EnergySeries(const std::string& path, MPI_Comm comm) : path_(path) {

@@ -2,8 +2,9 @@
 // The fluid side of the bodies (homogenized LBM): turns the body states the coupler
 // delivers into the porosity field and body table the HLBM collision reads, keeping the
 // update cost proportional to the body surfaces, and integrates the hydrodynamic force and
-// torque on each body by momentum exchange (paper, appendix "Fluid-Structure Interaction").
-// See the README for the method and the conventions.
+// torque on each body: by default from the penalization (docs/method.md Eqs. (13)-(15),
+// docs/method-loads.md), or by momentum exchange (Eqs. (9)-(10)). Conventions: docs/method.md,
+// "Bodies in the fluid: homogenized LBM".
 //
 // Use (one per fluid rank):
 //   hlbm::BodyField<T> bodies(shapes, {solver.box(), periodic}, {origin, units},
@@ -159,7 +160,8 @@ std::vector<BodyLoad> BodyField<T>::momentum_exchange(const Populations& f,
     if (t.id < 0) continue;
     const auto slot = static_cast<std::int32_t>(s);
     // Interior cells (d = 0) never neighbour a cell outside the body (the smoothing is
-    // wider than a link, see the README), so the body's band holds all its boundary links.
+    // wider than a link, docs/method.md "Momentum exchange"), so the body's band holds all its
+    // boundary links.
     LinkLoad sum;
     for (const BandCell& b : t.band) {
       const auto l = sub_.box.coords(b.cell);

@@ -1,6 +1,6 @@
 #pragma once
-// Galilean-invariant momentum exchange (Wen et al. 2014; paper, Eqs. momentumExchange and
-// momentumExchangeTorque), per solid node, in lattice units.
+// Galilean-invariant momentum exchange (Wen et al. 2014; docs/method.md Eqs. (9)-(10)), per
+// solid node, in lattice units.
 //
 // For a node x of body k (d(x) < 1, body(x) = k) and each direction i whose neighbour
 // x + c_i does not belong to body k, with f the post-stream populations:
@@ -52,7 +52,7 @@ std::array<double, 3> lever_arm(const Subdomain& sub, const PorousBody<T>& b,
   return r;
 }
 
-// u_p = v + w x r (paper, Eq. solidVelocity), lattice units.
+// u_p = v + w x r (docs/method.md Eq. (7)), lattice units.
 template <class T>
 std::array<double, 3> solid_velocity(const PorousBody<T>& b, const std::array<double, 3>& r) {
   return {double(b.velocity[0]) + double(b.omega[1]) * r[2] - double(b.omega[2]) * r[1],

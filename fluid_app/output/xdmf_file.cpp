@@ -1,62 +1,37 @@
 #include "fluid_app/output/xdmf_file.hpp"
 
-#include <cstdio>
-#include <iomanip>
-#include <sstream>
+#include "coupler_lib/output/xdmf.hpp"
 
 namespace lbdem {
 
-namespace {
-
-void attribute(std::ostringstream& x, const char* name, bool vector, const std::string& dims,
-               int precision, const std::string& h5, const std::string& view) {
-  x << "      <Attribute Name=\"" << name << "\" AttributeType=\"" << (vector ? "Vector" : "Scalar")
-    << "\" Center=\"Node\">\n"
-    << "        <DataItem Dimensions=\"" << dims << (vector ? " 3" : "")
-    << "\" NumberType=\"Float\" Precision=\"" << precision << "\" Format=\"HDF\">" << h5 << ":/"
-    << view << "/" << name << "</DataItem>\n"
-    << "      </Attribute>\n";
-}
-
-}  // namespace
-
 std::string xdmf_text(const FieldView& view, const FieldQuantities& what, double dx,
                       const std::vector<XdmfStep>& steps) {
-  std::ostringstream x;
-  x << std::setprecision(17);
-  // 3DCoRectMesh lists dimensions, origin and spacing slowest axis first: z, y, x.
+  // XDMF lists dimensions, origin and spacing slowest axis first: z, y, x.
   const auto& a = view.axes;
-  std::ostringstream dims;
-  dims << a[2].count << " " << a[1].count << " " << a[0].count;
-  const int precision = what.double_precision ? 8 : 4;
-  x << "<?xml version=\"1.0\" ?>\n"
-    << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
-    << "<Xdmf Version=\"2.0\">\n"
-    << "  <Domain>\n"
-    << "    <Grid Name=\"" << view.name
-    << "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-  for (const auto& s : steps) {
-    x << "    <Grid Name=\"" << view.name << "\" GridType=\"Uniform\">\n"
-      << "      <Time Value=\"" << s.time << "\"/>\n"
-      << "      <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"" << dims.str() << "\"/>\n"
-      << "      <Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n"
-      << "        <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" "
-         "Format=\"XML\">"
-      << (a[2].start + 0.5) * dx << " " << (a[1].start + 0.5) * dx << " " << (a[0].start + 0.5) * dx
-      << "</DataItem>\n"
-      << "        <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" "
-         "Format=\"XML\">"
-      << a[2].stride * dx << " " << a[1].stride * dx << " " << a[0].stride * dx << "</DataItem>\n"
-      << "      </Geometry>\n";
-    if (what.velocity) attribute(x, "velocity", true, dims.str(), precision, s.h5_file, view.name);
-    if (what.density) attribute(x, "density", false, dims.str(), precision, s.h5_file, view.name);
-    if (what.pressure) attribute(x, "pressure", false, dims.str(), precision, s.h5_file, view.name);
-    x << "    </Grid>\n";
+  XdmfLattice lattice;
+  for (int i = 0; i < 3; ++i) {
+    const auto& axis = a[2 - i];
+    lattice.dims[i] = axis.count;
+    lattice.origin[i] = (axis.start + 0.5) * dx;  // the first node's cell centre
+    lattice.spacing[i] = axis.stride * dx;
   }
-  x << "    </Grid>\n"
-    << "  </Domain>\n"
-    << "</Xdmf>\n";
-  return x.str();
+  const int precision = what.double_precision ? 8 : 4;
+  std::vector<XdmfGrid> grids;
+  for (const auto& s : steps) {
+    XdmfGrid g{view.name, s.time, lattice, {}};
+    auto field = [&](const char* name, bool vector) {
+      std::vector<long> dims(lattice.dims.begin(), lattice.dims.end());
+      if (vector) dims.push_back(3);
+      const std::string source = s.h5_file + ":/" + view.name + "/" + name;
+      g.attributes.push_back(
+          {name, vector ? "Vector" : "Scalar", {dims, "Float", precision, source}});
+    };
+    if (what.velocity) field("velocity", true);
+    if (what.density) field("density", false);
+    if (what.pressure) field("pressure", false);
+    grids.push_back(std::move(g));
+  }
+  return xdmf_series(view.name, grids);
 }
 
 }  // namespace lbdem

@@ -1,7 +1,7 @@
 #pragma once
-// The XDMF (version 2) description of a series of HDF5 field files: one temporal collection
-// of uniform 3DCoRectMesh grids, one grid per output time, which ParaView opens directly
-// ("Xdmf Reader"). Nodes are the lattice nodes at the cell centres.
+// The XDMF description of a series of HDF5 field files, through the shared XDMF 3 writer
+// (coupler_lib/output/xdmf.hpp): one lattice grid per output time, which ParaView opens
+// directly. Nodes are the lattice nodes at the cell centres.
 #include <string>
 #include <vector>
 

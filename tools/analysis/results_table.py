@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Prints runs/validation/results.csv (appended to by tools/validate_case.py) as the markdown
-table of the README; with --last, only the latest row of each (case, resolution, tau,
+table of docs/validation.md; with --last, only the latest row of each (case, resolution, tau,
 ranks).
 
     /usr/bin/python3 tools/analysis/results_table.py [--last] [results.csv]

@@ -1,4 +1,5 @@
-"""Reading a run's scene and outputs (the README: "Scene files", body output, fluid output).
+"""Reading a run's scene and outputs (docs/user-guide.md: "Scene files", body output, fluid
+output).
 
 Paths in a scene are relative to the scene file's folder. A coupled run writes
   <dem.output.directory>/<name>_bodies.csv   one row per body and output time

@@ -1,4 +1,4 @@
-"""Launching runs through the real entry points (the README: "Running").
+"""Launching runs through the real entry points (docs/user-guide.md: "Running").
 
     mpirun -np A fluid_app scene.yaml : -np B dem_app scene.yaml     (coupled, MPMD)
 
