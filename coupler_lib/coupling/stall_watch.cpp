@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
-#include "coupler_lib/app/run_app.hpp"
+#include "coupler_lib/errors.hpp"
 
 namespace lbdem {
 
