@@ -8,6 +8,7 @@
 #include "coupler_lib/coupling/dem_coupler.hpp"
 #include "coupler_lib/coupling/schedule.hpp"
 #include "coupler_lib/coupling/world.hpp"
+#include "coupler_lib/scene/shape_catalogue.hpp"
 #include "dem_app/body_output.hpp"
 #include "dem_app/coupling/body_trace.hpp"
 #include "dem_app/dem_run.hpp"
