@@ -15,6 +15,9 @@ struct CouplingParams {
   double checkpoint_interval = 0;  // simulated s between checkpoints; 0 = no checkpoints
   double handshake_timeout = 60;   // wall s a side waits for the other at the handshake
   std::string wait = "backoff";    // how a waiting side waits: backoff (sleeps) | blocking (spins)
+  // The DEM integrates step n while the fluid runs step n + 1 on the body states of step
+  // n - 1 (one fluid step older than without it): docs/coupling-overlap.md.
+  bool overlap = false;
 };
 
 CouplingParams parse_coupling(Section& s);
