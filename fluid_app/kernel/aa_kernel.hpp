@@ -99,14 +99,12 @@ inline void collide_cell(const KernelArgs<T>& a, CellIndex cell, int x, int y, i
   }
   const T inv_rho = T(1) / rho;
   const T vx = jx * inv_rho, vy = jy * inv_rho, vz = jz * inv_rho;
-  // Shift du = u+ - v, kept apart from v so that the forcing below is a closed-form
-  // difference of small terms instead of the difference of two full equilibria.
-  T dux = 0, duy = 0, duz = 0;
-  T weight = 1;  // porosity d, for the flow sums
+  T ux = vx, uy = vy, uz = vz;  // u+ (shifted velocity)
+  T weight = 1;                 // porosity d, for the flow sums
   if constexpr (Mode != Forcing::none) {
-    dux = a.force[0] * inv_rho;
-    duy = a.force[1] * inv_rho;
-    duz = a.force[2] * inv_rho;
+    ux += a.force[0] * inv_rho;
+    uy += a.force[1] * inv_rho;
+    uz += a.force[2] * inv_rho;
   }
   if constexpr (Mode == Forcing::porous || Mode == Forcing::porous_one_body) {
     const T dd = T(a.d[cell]);
@@ -134,15 +132,15 @@ inline void collide_cell(const KernelArgs<T>& a, CellIndex cell, int x, int y, i
     const T upy = bt[4] + bt[8] * r[0] - bt[6] * r[2];
     const T upz = bt[5] + bt[6] * r[1] - bt[7] * r[0];
     const T pen = T(1) - dd;
-    dux += pen * (upx - vx);
-    duy += pen * (upy - vy);
-    duz += pen * (upz - vz);
+    ux += pen * (upx - vx);
+    uy += pen * (upy - vy);
+    uz += pen * (upz - vz);
     weight = dd;
     // Momentum the penalization gives this cell, and the (1 - d) share of its
     // post-collision momentum (the fluid the body covers).
     const T rp = rho * pen;
     const T px = rp * (upx - vx), py = rp * (upy - vy), pz = rp * (upz - vz);
-    const T qx = rp * (vx + dux), qy = rp * (vy + duy), qz = rp * (vz + duz);
+    const T qx = rp * ux, qy = rp * uy, qz = rp * uz;
     ex[0] = px;
     ex[1] = py;
     ex[2] = pz;
@@ -156,7 +154,6 @@ inline void collide_cell(const KernelArgs<T>& a, CellIndex cell, int x, int y, i
     ex[10] = r[2] * qx - r[0] * qz;
     ex[11] = r[0] * qy - r[1] * qx;
   }
-  const T ux = vx + dux, uy = vy + duy, uz = vz + duz;  // u+ (shifted velocity)
   if constexpr (Sum) {
     // u* = (v + u+) / 2 (paper, Eq. physicalVelocity).
     const double m = double(weight * rho) * FlowSums::scale;
@@ -175,18 +172,14 @@ inline void collide_cell(const KernelArgs<T>& a, CellIndex cell, int x, int y, i
       out[i] = feq + keep * (f[i] - feq);
     }
   } else {
-    // f^eq(u+) - f^eq(v) = w rho [3 c.du + 4.5 ((c.u+)^2 - (c.v)^2) - 1.5 (u+^2 - v^2)]
-    //                    = w rho [c.du (3 + 4.5 (2 c.v + c.du)) - 1.5 du.(u+ + v)],
-    // the same as two full equilibria to round-off (docs/performance.md, "Porous kernel").
-    const T duu = T(1.5) * (dux * (ux + vx) + duy * (uy + vy) + duz * (uz + vz));
+    const T uu = T(1.5) * (ux * ux + uy * uy + uz * uz);
 #pragma GCC unroll 19
     for (int i = 0; i < Q; ++i) {
       const T cv = T(c[i][0]) * vx + T(c[i][1]) * vy + T(c[i][2]) * vz;
-      const T cd = T(c[i][0]) * dux + T(c[i][1]) * duy + T(c[i][2]) * duz;
-      const T wr = T(w[i]) * rho;
-      const T feq_v = wr * (T(1) + T(3) * cv + T(4.5) * cv * cv - vv);
-      const T shift = wr * (cd * (T(3) + T(4.5) * (T(2) * cv + cd)) - duu);
-      out[i] = feq_v + keep * (f[i] - feq_v) + shift;
+      const T cu = T(c[i][0]) * ux + T(c[i][1]) * uy + T(c[i][2]) * uz;
+      const T feq_v = T(w[i]) * rho * (T(1) + T(3) * cv + T(4.5) * cv * cv - vv);
+      const T feq_u = T(w[i]) * rho * (T(1) + T(3) * cu + T(4.5) * cu * cu - uu);
+      out[i] = feq_u + keep * (f[i] - feq_v);
     }
   }
 }
@@ -245,8 +238,8 @@ inline void collide_row(const KernelArgs<T>& a, int x0, int len, int y, int z, F
     s.momentum[2] += m2;
     s.mass += mass;
   }
-  // The run's exchange sums, in cell order (reproducible): one add per body and term for a
-  // one-body run, a scatter by cell where bodies share the run (all its cells have d < 1).
+  // The row's exchange sums, in cell order (reproducible): one add per body and term for a
+  // one-body row (cells with d = 1 contribute exact zeros), a scatter by cell otherwise.
   if constexpr (Mode == Forcing::porous_one_body) {
     double* acc = a.exchange + kPenaltyTerms * std::size_t(a.row_id);
     for (int m = 0; m < kPenaltyTerms; ++m) {
@@ -256,47 +249,9 @@ inline void collide_row(const KernelArgs<T>& a, int x0, int len, int y, int z, F
     }
   } else if constexpr (Mode == Forcing::porous) {
     for (int k = 0; k < len; ++k) {
+      if (a.d[row + k] >= 1.0f) continue;
       double* acc = a.exchange + kPenaltyTerms * std::size_t(a.body[row + k] + 1);
       for (int m = 0; m < kPenaltyTerms; ++m) acc[m] += double(ex_row[m * ex_stride + k]);
-    }
-  }
-}
-
-// One porous row, split into runs (x0 .. x0+len-1 local): runs of d = 1 cells take the
-// fluid path (`Forcing::none` without a uniform force, else `uniform`; for d = 1 the
-// penalization shift is exactly zero), runs of d < 1 cells of one body take the broadcast
-// variant, and only runs where several bodies touch gather the body table per cell. The load
-// sums thus cover the porous cells alone, and the cost of bodies grows with their cells.
-template <class T, bool Odd, bool Sum>
-inline void collide_porous_row(KernelArgs<T>& a, bool uniform_force, int x0, int len, int y, int z,
-                               FlowSums& s) {
-  const CellIndex row = a.box.index(x0, y, z);
-  const float* d = a.d + row;
-  const std::int32_t* body = a.body + row;
-  int k = 0;
-  while (k < len) {
-    const int start = k;
-    if (d[k] >= 1.0f) {
-      while (k < len && d[k] >= 1.0f) ++k;
-      if (uniform_force) {
-        collide_row<T, Odd, Forcing::uniform, Sum>(a, x0 + start, k - start, y, z, s);
-      } else {
-        collide_row<T, Odd, Forcing::none, Sum>(a, x0 + start, k - start, y, z, s);
-      }
-      continue;
-    }
-    std::int32_t lo = body[k], hi = body[k];
-    while (k < len && d[k] < 1.0f) {
-      lo = body[k] < lo ? body[k] : lo;
-      hi = body[k] > hi ? body[k] : hi;
-      ++k;
-    }
-    if (lo == hi) {
-      for (int m = 0; m < 9; ++m) a.row_body[m] = a.table[m][lo + 1];
-      a.row_id = lo + 1;
-      collide_row<T, Odd, Forcing::porous_one_body, Sum>(a, x0 + start, k - start, y, z, s);
-    } else {
-      collide_row<T, Odd, Forcing::porous, Sum>(a, x0 + start, k - start, y, z, s);
     }
   }
 }
@@ -304,8 +259,12 @@ inline void collide_porous_row(KernelArgs<T>& a, bool uniform_force, int x0, int
 }  // namespace detail
 
 // Update the cells of `r` (local coordinates, interior only). `Odd` selects the AA step kind.
-// With the porous field, rows without any cell of d < 1 take the fluid path and the others
-// are split into runs (detail::collide_porous_row).
+// With the porous field, a row without any cell of d < 1 takes the fluid path: the plain
+// variant without a uniform force (what a fluid-only run does), else the uniform-force one.
+// For d = 1 the shift (1 - d)(u_p - v) adds exactly zero, so the result is the same, and the
+// cost of bodies grows with the rows they touch, not with the domain. (A closed-form
+// f^eq(u+) - f^eq(v) instead of the two equilibria, and splitting porous rows into runs,
+// were measured no faster: docs/performance.md, "Porous kernel".)
 template <class T, bool Odd, Forcing Mode, bool Sum>
 void collide_stream(const KernelArgs<T>& args, const CellRange& r, FlowSums& sums) {
   // A private copy: the population stores cannot alias it, so its pointers and constants
@@ -323,19 +282,33 @@ void collide_stream(const KernelArgs<T>& args, const CellRange& r, FlowSums& sum
   for (int z = r.lo[2]; z < r.hi[2]; ++z) {
     for (int y = r.lo[1]; y < r.hi[1]; ++y) {
       if constexpr (Mode == Forcing::porous) {
-        const float* d = a.d + a.box.index(r.lo[0], y, z);
+        const CellIndex row = a.box.index(r.lo[0], y, z);
+        const float* d = a.d + row;
         int solid = 0;
         for (int k = 0; k < len; ++k) solid += d[k] < 1.0f ? 1 : 0;
-        if (solid != 0) {
-          detail::collide_porous_row<T, Odd, Sum>(a, uniform_force, r.lo[0], len, y, z, s);
-        } else if (uniform_force) {
-          detail::collide_row<T, Odd, Forcing::uniform, Sum>(a, r.lo[0], len, y, z, s);
-        } else {
-          detail::collide_row<T, Odd, Forcing::none, Sum>(a, r.lo[0], len, y, z, s);
+        if (solid == 0) {
+          if (uniform_force) {
+            detail::collide_row<T, Odd, Forcing::uniform, Sum>(a, r.lo[0], len, y, z, s);
+          } else {
+            detail::collide_row<T, Odd, Forcing::none, Sum>(a, r.lo[0], len, y, z, s);
+          }
+          continue;
         }
-      } else {
-        detail::collide_row<T, Odd, Mode, Sum>(a, r.lo[0], len, y, z, s);
+        const std::int32_t* body = a.body + row;
+        std::int32_t lo = std::numeric_limits<std::int32_t>::max(), hi = -2;
+        for (int k = 0; k < len; ++k) {
+          const bool p = d[k] < 1.0f;
+          lo = p && body[k] < lo ? body[k] : lo;
+          hi = p && body[k] > hi ? body[k] : hi;
+        }
+        if (lo == hi) {
+          for (int m = 0; m < 9; ++m) a.row_body[m] = a.table[m][lo + 1];
+          a.row_id = lo + 1;
+          detail::collide_row<T, Odd, Forcing::porous_one_body, Sum>(a, r.lo[0], len, y, z, s);
+          continue;
+        }
       }
+      detail::collide_row<T, Odd, Mode, Sum>(a, r.lo[0], len, y, z, s);
     }
   }
   if constexpr (Sum) {
