@@ -33,6 +33,7 @@ FULL = [
     ("cubes64_c27", "fluid58"),
     ("cubes64_c100", "fluid58"),
     ("cubes64_c100_particle_dt", "fluid58"),
+    ("cubes64_c100_overlap", "fluid58"),
     ("cubes64_c489", "fluid58"),
     ("fluid72", None),
     ("cubes125_c27", "fluid72"),

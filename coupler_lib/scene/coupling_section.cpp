@@ -34,6 +34,9 @@ CouplingParams parse_coupling(Section& s) {
       Bounds::non_negative());
   p.wait = s.choice("wait", "backoff", {"backoff", "blocking"},
                     "how a side waits for the other: backoff sleeps, blocking spins a core");
+  p.overlap = s.get<bool>("overlap", false,
+                          "the two programs compute at the same time, the fluid on body states "
+                          "one fluid step older");
   s.finish();
   return p;
 }

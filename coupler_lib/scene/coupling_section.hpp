@@ -16,6 +16,9 @@ struct CouplingParams {
   double handshake_timeout = 60;   // wall s a side waits for the other at the handshake
   double stall_timeout = 0;        // wall s without packets before the job ends; 0 = automatic
   std::string wait = "backoff";    // how a waiting side waits: backoff (sleeps) | blocking (spins)
+  // The DEM integrates step n while the fluid runs step n + 1 on the body states of step
+  // n - 1 (one fluid step older than without it): docs/coupling-overlap.md.
+  bool overlap = false;
 };
 
 CouplingParams parse_coupling(Section& s);

@@ -13,6 +13,7 @@
 #include "coupler_lib/scene/shape_catalogue.hpp"
 #include "fluid_app/coupling/momentum_audit.hpp"
 #include "fluid_app/coupling/settling_force.hpp"
+#include "fluid_app/coupling/state_feed.hpp"
 #include "fluid_app/fluid_run.hpp"
 #include "fluid_app/hlbm/body_field.hpp"
 #include "fluid_app/output/run_watch.hpp"
@@ -93,7 +94,8 @@ int run_typed(AppContext& ctx) {
   }
   const bool penalty = scene.fluid->loads == LoadMethod::penalization;
 
-  const auto first = coupler->receive_states(0);
+  StateFeed feed(*coupler, scene.coupling.overlap);
+  const auto& first = feed.start();
   if (audit) audit->write(0, 0.0, solver, first);
   bodies.update(first);
   run.start();
@@ -108,15 +110,18 @@ int run_typed(AppContext& ctx) {
                            : bodies.momentum_exchange(
                                  [&](int i, CellIndex c) { return solver.population(i, c); }, step);
     bodies_s += seconds_since(t);
-    coupler->send_loads(step, loads);
+    feed.send(step, loads);
     if (watch.stopped()) break;
-    const auto states = coupler->receive_states(step);
-    if (audit && schedule.output_at(step))
-      audit->write(step, double(step) * scene.fluid->units.dt, solver, states);
+    // The audit needs the states of this very step (a brief stop of the overlap).
+    const bool audit_now = audit && schedule.output_at(step);
+    const auto& states = feed.next(step, audit_now);
+    if (audit_now) audit->write(step, double(step) * scene.fluid->units.dt, solver, states);
+    if (!feed.fresh()) continue;
     t = Clock::now();
     bodies.update(states);
     bodies_s += seconds_since(t);
   }
+  if (!watch.stopped()) feed.finish(solver.steps());
   if (const std::int64_t n = solver.steps(); n > 0) {
     const CouplingTimes c = coupler->times();
     ctx.log->info(

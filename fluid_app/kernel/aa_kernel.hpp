@@ -259,9 +259,12 @@ inline void collide_row(const KernelArgs<T>& a, int x0, int len, int y, int z, F
 }  // namespace detail
 
 // Update the cells of `r` (local coordinates, interior only). `Odd` selects the AA step kind.
-// With the porous field, a row without any cell of d < 1 takes the uniform-force variant:
-// for d = 1 the shift (1 - d)(u_p - v) adds exactly zero, so the result is the same, and the
-// cost of bodies grows with the rows they touch, not with the domain.
+// With the porous field, a row without any cell of d < 1 takes the fluid path: the plain
+// variant without a uniform force (what a fluid-only run does), else the uniform-force one.
+// For d = 1 the shift (1 - d)(u_p - v) adds exactly zero, so the result is the same, and the
+// cost of bodies grows with the rows they touch, not with the domain. (A closed-form
+// f^eq(u+) - f^eq(v) instead of the two equilibria, and splitting porous rows into runs,
+// were measured no faster: docs/performance.md, "Porous kernel".)
 template <class T, bool Odd, Forcing Mode, bool Sum>
 void collide_stream(const KernelArgs<T>& args, const CellRange& r, FlowSums& sums) {
   // A private copy: the population stores cannot alias it, so its pointers and constants
@@ -270,6 +273,7 @@ void collide_stream(const KernelArgs<T>& args, const CellRange& r, FlowSums& sum
   const int len = r.hi[0] - r.lo[0];
   FlowSums s{};
   std::vector<T> scratch;
+  const bool uniform_force = a.force[0] != 0 || a.force[1] != 0 || a.force[2] != 0;
   if constexpr (Mode == Forcing::porous) {
     scratch.resize(std::size_t(kPenaltyTerms) * std::size_t(len));
     a.scratch = scratch.data();
@@ -283,7 +287,11 @@ void collide_stream(const KernelArgs<T>& args, const CellRange& r, FlowSums& sum
         int solid = 0;
         for (int k = 0; k < len; ++k) solid += d[k] < 1.0f ? 1 : 0;
         if (solid == 0) {
-          detail::collide_row<T, Odd, Forcing::uniform, Sum>(a, r.lo[0], len, y, z, s);
+          if (uniform_force) {
+            detail::collide_row<T, Odd, Forcing::uniform, Sum>(a, r.lo[0], len, y, z, s);
+          } else {
+            detail::collide_row<T, Odd, Forcing::none, Sum>(a, r.lo[0], len, y, z, s);
+          }
           continue;
         }
         const std::int32_t* body = a.body + row;

@@ -5,15 +5,17 @@
 #   2. `fluid_app --replay` alone reproduces the recorded loads bit for bit;
 #   3. `dem_app --replay` alone reproduces the recorded states bit for bit;
 #   4. a recording with one bit flipped in one load is detected, naming the step.
-# Usage: replay_test.sh BUILD_DIR SOURCE_DIR FLUID_RANKS DEM_RANKS
+# With a fifth argument `overlap`, the same with coupling.overlap: true.
+# Usage: replay_test.sh BUILD_DIR SOURCE_DIR FLUID_RANKS DEM_RANKS [overlap]
 set -euo pipefail
-build=$1 src=$2 nf=$3 nd=$4
+build=$1 src=$2 nf=$3 nd=$4 mode=${5:-}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 mpirun=(mpirun --oversubscribe)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cp "$src/tests/integration/replay_scene.yaml" "$work/scene.yaml"
 printf '  record: rec.h5\n' >> "$work/scene.yaml"
+if [ "$mode" = overlap ]; then printf '  overlap: true\n' >> "$work/scene.yaml"; fi
 cd "$work"
 
 "${mpirun[@]}" -np "$nf" "$build/fluid_app/fluid_app" scene.yaml : -np "$nd" "$build/dem_app/dem_app" scene.yaml > run.log 2>&1 \
@@ -47,4 +49,4 @@ fi
 grep -q "differ from the recording" tampered.log \
   || { cat tampered.log; echo "FAIL: the mismatch was not reported"; exit 1; }
 grep "differ from the recording" tampered.log | head -1
-echo "PASS: record ($nf:$nd), fluid replay and DEM replay bit for bit, tampering detected"
+echo "PASS: record ($nf:$nd${mode:+, $mode}), fluid replay and DEM replay bit for bit, tampering detected"
