@@ -99,7 +99,7 @@ TEST(Lubrication, SphereApproachingAWallFollowsTheMomentumBalance) {
   char what[128];
   std::snprintf(what, sizeof what, "speed vs momentum balance %.2e of w0; stop gap %.4e m vs %.4e,",
                 t.worst, t.final_gap, h_stop);
-  test::report("lubrication sphere-wall (DEM only)", what, stop_error, timer.seconds());
+  test::report("lubrication sphere-wall (DEM only)", what, stop_error, 1e-2, timer.seconds());
   // Velocity Verlet with the half-step speed in the damper: first order in dt c/m (<= 0.03 here).
   EXPECT_LT(t.worst, 2e-3);
   EXPECT_LT(stop_error, 1e-2);
@@ -115,7 +115,7 @@ TEST(Lubrication, TwoSpheresApproachingFollowTheMomentumBalanceAndConserveMoment
   std::snprintf(what, sizeof what,
                 "speed vs momentum balance %.2e of w0; momentum %.1e; stop gap %.4e m vs %.4e,",
                 t.worst, t.momentum, t.final_gap, h_stop);
-  test::report("lubrication sphere-sphere (DEM only)", what, stop_error, timer.seconds());
+  test::report("lubrication sphere-sphere (DEM only)", what, stop_error, 1e-2, timer.seconds());
   EXPECT_LT(t.worst, 2e-3);
   EXPECT_LT(stop_error, 1e-2);
   EXPECT_LT(t.momentum, 1e-12);
