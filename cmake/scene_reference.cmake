@@ -4,8 +4,10 @@
 # listed. Arguments: FLUID_APP, DEM_APP, CONFIGS (folder of scenes), OUT (file to write), and
 # CHECK (a file to compare OUT with; the run fails when they differ: the page has drifted).
 file(GLOB_RECURSE scenes RELATIVE ${CONFIGS} ${CONFIGS}/*.yaml)
-# configs/study/ holds study descriptions for tools/study.py (docs/study.md), not scenes.
-list(FILTER scenes EXCLUDE REGEX "^study/")
+# configs/study/ holds study descriptions for tools/study.py (docs/study.md), not scenes;
+# configs/stability/ holds stiff and extreme cases, some of them refused on purpose
+# (docs/stability.md).
+list(FILTER scenes EXCLUDE REGEX "^(study|stability)/")
 list(SORT scenes)
 set(keys "")
 foreach(scene IN LISTS scenes)
