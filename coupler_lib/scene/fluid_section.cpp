@@ -86,9 +86,8 @@ FluidParams parse_fluid(Section& s) {
   p.porosity_lookup = s.choice(
       "porosity_lookup", "nearest", {"nearest", "trilinear"},
       "how a node reads a body's smoothed reference porosity: nearest (the paper's nearest "
-      "voxel; narrower band, d in steps of 1/19, closer settling speeds: docs/validation.md; "
-      "with loads: momentum_exchange it misses links at rotated edges: docs/performance.md) "
-      "or trilinear (d continuous in the pose)");
+      "voxel; narrower band, d in steps of 1/19, closer settling speeds: docs/validation.md) "
+      "or trilinear (d continuous in the pose; wider band: docs/performance.md)");
   for (int d = 0; d < 3; ++d) {
     const double n = p.domain[d] / p.dx;
     p.cells[d] = static_cast<int>(std::lround(n));
