@@ -18,15 +18,15 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "analysis"))
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import coupled_case  # noqa: E402
 import lubrication_reference as ref  # noqa: E402
 import validate_case  # noqa: E402
 import yaml  # noqa: E402
+from lbdem import io, run  # noqa: E402
 
 
 def approach_samples(scene, bodies):
     """[(h, lambda_lattice)] from the trace; U, a, wall."""
-    s, _ = coupled_case.scene_info(scene)
+    s = io.load_scene(scene)
     a = 0.5 * s["shapes"][0]["diameter"]
     f = s["fluid"]
     mu = f["density"] * f["viscosity"]
@@ -52,10 +52,10 @@ def approach_samples(scene, bodies):
 def cmd_approach(args):
     wall_s = 0.0
     if not args.no_run:
-        wall_s, _ = coupled_case.run(args.build, args.scene, *map(int, args.ranks.split(":")))
-    _, trace = coupled_case.scene_info(args.scene)
-    samples, a, wall, dx = approach_samples(args.scene, coupled_case.read_trace(trace))
-    s, _ = coupled_case.scene_info(args.scene)
+        wall_s, _ = run.run(args.build, args.scene, *map(int, args.ranks.split(":")))
+    trace = io.trace_path(args.scene)
+    samples, a, wall, dx = approach_samples(args.scene, io.read_trace_by_body(trace))
+    s = io.load_scene(args.scene)
     lub = s["dem"]["lubrication"]
     h_min = lub["min_gap"]
     h_c = lub.get("cutoff") or lub.get("cutoff_cells", 1.0) * dx
@@ -130,7 +130,7 @@ def scene_without_correction(scene):
 def restitution(scene, rows):
     """(U_in, U_out, St, e) of the first bounce: U_in the largest downward speed before the
     first reversal, U_out the largest upward speed after it (0 without a reversal)."""
-    s, _ = coupled_case.scene_info(scene)
+    s = io.load_scene(scene)
     f = s["fluid"]
     d = s["shapes"][0]["diameter"]
     rho_p = s["bodies"][0]["density"]
@@ -152,9 +152,9 @@ def cmd_bounce(args):
         for path, corrected in runs:
             wall_s = 0.0
             if not args.no_run:
-                wall_s, _ = coupled_case.run(args.build, path, *map(int, args.ranks.split(":")))
-            s, trace = coupled_case.scene_info(path)
-            u_in, u_out, st, e = restitution(path, coupled_case.read_trace(trace)[0])
+                wall_s, _ = run.run(args.build, path, *map(int, args.ranks.split(":")))
+            s, trace = io.load_scene(path), io.trace_path(path)
+            u_in, u_out, st, e = restitution(path, io.read_trace_by_body(trace)[0])
             e_dry = s["dem"].get("material", {}).get("restitution", 0.9)
             legendre = math.exp(-35 / st)
             diff = e / e_dry - legendre
