@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "coupler_lib/scene/scene.hpp"
-#include "dem_app/dem_setup.hpp"
 #include "coupler_lib/scene/shape_catalogue.hpp"
+#include "dem_app/dem_setup.hpp"
 
 namespace lbdem {
 namespace {

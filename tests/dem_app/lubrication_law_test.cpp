@@ -6,9 +6,9 @@
 #include <string>
 
 #include "coupler_lib/scene/scene.hpp"
+#include "coupler_lib/scene/shape_catalogue.hpp"
 #include "dem_app/dem_setup.hpp"
 #include "dem_app/lubrication_law.hpp"
-#include "coupler_lib/scene/shape_catalogue.hpp"
 
 namespace lbdem {
 namespace {
