@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <limits>
 #include <sstream>
@@ -13,6 +14,17 @@
 #include "dem_app/contact_model.hpp"
 
 namespace lbdem {
+
+namespace {
+
+// A relative difference as a signed percentage with four decimals ("+0.0050 %").
+std::string percent(double relative) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%+.4f %%", 100.0 * relative);
+  return text;
+}
+
+}  // namespace
 
 std::string describe_engine_inputs(const DemSetup& setup) {
   std::ostringstream s;
@@ -37,7 +49,8 @@ std::string describe_engine_inputs(const DemSetup& setup) {
       << l.viscosity << " Pa s";
   for (const auto& sh : setup.shapes)
     s << "; shape '" << sh.name << "': " << sh.clump.radii.size() << " spheres, volume "
-      << sh.mass.volume << " m^3";
+      << sh.mass.volume << " m^3 (fluid's reference lattice "
+      << percent(sh.reference_volume / sh.mass.volume - 1) << ")";
   return s.str();
 }
 

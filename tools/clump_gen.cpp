@@ -1,6 +1,7 @@
 // clump_gen: shape (analytic or STL) -> multi-sphere clump file, with its shape errors.
 // Also exports the analytic shapes as STL (the shipped configs/shapes/*.stl come from here).
-// See docs/user-guide.md ("Clump generator") for the methods, the file format and the measured errors.
+// See docs/user-guide.md ("Clump generator") for the methods, the file format and the measured
+// errors.
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -186,7 +187,7 @@ void generate(const Options& o) {
   const double L = (solid.upper() - solid.lower()).maxCoeff();
   const double h = L / o.voxels;
   const Voxels vox = voxelize(solid, h, 3);
-  const MassProperties mass = mass_properties(vox);
+  const MassProperties mass = mass_properties(solid);
   const Clump clump = o.method == "surface"
                           ? surface_clump(solid, vox, {o.grid, o.radius_ratio, o.center_sphere})
                           : fill_clump(solid, vox, {o.spheres});
@@ -199,7 +200,7 @@ void generate(const Options& o) {
     method << "method: fill spheres=" << o.spheres;
   lattice.precision(6);
   lattice << "lattice: h=" << h << " (" << o.voxels << " voxels across " << L << "), voxel volume "
-          << mass.volume << ", exact volume " << solid.exact_volume();
+          << mass_properties(vox).volume << ", exact volume " << mass.volume;
   err << "volume_error: " << q.volume_error
       << "  (|clump union XOR shape| / shape volume, enclosed cavities filled)";
   dev << "max_surface_deviation: " << q.max_deviation << "  (" << q.max_deviation / L

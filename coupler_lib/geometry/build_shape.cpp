@@ -66,7 +66,8 @@ Shape build_shape(const ShapeParams& p, double h) {
     }
   }();
   Voxels vox = voxelize(solid, h, kVoxelPad);
-  shape.mass = mass_properties(vox);
+  shape.mass = mass_properties(solid);
+  shape.reference_volume = mass_properties(vox).volume;
   if (vox.count() < kMinSolidVoxels) {
     std::ostringstream s;
     s << p.where << ": shape '" << p.name << "': only " << vox.count()

@@ -1,7 +1,7 @@
 #pragma once
-// One call from scene parameters to everything a side needs about a shape: the reference
-// voxelization in the shape frame, mass properties from it, the contact clump and its
-// quality, and the bounding radius. Both binaries call this with the same spacing and get
+// One call from scene parameters to everything a side needs about a shape: the exact mass
+// properties, the reference voxelization in the shape frame (with the volume it embeds), the
+// contact clump and its quality, and the bounding radius. Both binaries call this with the same spacing and get
 // identical numbers.
 #include "coupler_lib/geometry/shape.hpp"
 #include "coupler_lib/geometry/shape_params.hpp"

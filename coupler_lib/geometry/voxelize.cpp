@@ -7,6 +7,7 @@
 
 #include "coupler_lib/errors.hpp"
 #include "coupler_lib/geometry/ray_parity.hpp"
+#include "coupler_lib/geometry/voxel_fill.hpp"
 
 namespace lbdem {
 
@@ -88,6 +89,7 @@ Voxels voxelize_mesh(const TriangleMesh& mesh, double h, int pad) {
       }
     }
   }
+  fill_fractions(mesh, v);
   return v;
 }
 
@@ -99,6 +101,7 @@ Voxels voxelize(const SolidGeometry& geometry, double h, int pad) {
     for (int j = 0; j < v.n[1]; ++j)
       for (int i = 0; i < v.n[0]; ++i)
         v.solid[v.index(i, j, k)] = geometry.inside(v.center(i, j, k)) ? 1 : 0;
+  fill_fractions(geometry, v);
   return v;
 }
 

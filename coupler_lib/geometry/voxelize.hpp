@@ -1,5 +1,6 @@
 #pragma once
-// Inside/outside voxelization on a cell-centred lattice (input frame).
+// Inside/outside voxelization on a cell-centred lattice (input frame), with the solid volume
+// fraction of every voxel (voxel_fill.hpp).
 //
 // The lattice is centred on the middle of the geometry's bounding box, with
 // ceil(extent / h) voxels across each axis plus `pad` empty layers on every side, so a box

@@ -19,37 +19,39 @@ PorosityLookup porosity_lookup_from(const std::string& name) {
 ReferencePorosity::ReferencePorosity(const Voxels& voxels) : h_(voxels.h) {
   const auto& n = voxels.n;
   if (!(h_ > 0) || n[0] < 1 || n[1] < 1 || n[2] < 1 ||
-      voxels.solid.size() != static_cast<std::size_t>(n[0]) * n[1] * n[2])
+      voxels.fill.size() != static_cast<std::size_t>(n[0]) * n[1] * n[2])
     throw std::invalid_argument(
         "reference porosity: empty or inconsistent voxel lattice (h=" + std::to_string(h_) + ")");
   for (int a = 0; a < 3; ++a) m_[a] = n[a] + 2 * kPad;
   shift_ = -voxels.origin / h_ + Eigen::Vector3d::Constant(kPad);
 
-  auto solid = [&](int i, int j, int k) {
-    if (i < 0 || j < 0 || k < 0 || i >= n[0] || j >= n[1] || k >= n[2]) return false;
-    return voxels.solid[static_cast<std::size_t>(i) +
-                        static_cast<std::size_t>(n[0]) * (static_cast<std::size_t>(j) +
-                                                          static_cast<std::size_t>(n[1]) * k)] != 0;
+  // Fluid fraction of a voxel: 1 - fill, 1 off the lattice.
+  auto fluid_at = [&](int i, int j, int k) {
+    if (i < 0 || j < 0 || k < 0 || i >= n[0] || j >= n[1] || k >= n[2]) return 1.0f;
+    return 1.0f -
+           voxels.fill[static_cast<std::size_t>(i) +
+                       static_cast<std::size_t>(n[0]) *
+                           (static_cast<std::size_t>(j) + static_cast<std::size_t>(n[1]) * k)];
   };
 
   smooth_.assign(static_cast<std::size_t>(m_[0]) * m_[1] * m_[2], 1.0f);
-  fluid_.assign(smooth_.size(), 1);
+  fluid_.assign(smooth_.size(), 1.0f);
   std::size_t idx = 0;
   for (int k = 0; k < m_[2]; ++k)
     for (int j = 0; j < m_[1]; ++j)
       for (int i = 0; i < m_[0]; ++i, ++idx) {
-        fluid_[idx] = solid(i - kPad, j - kPad, k - kPad) ? 0 : 1;
-        int fluid = 0;
+        fluid_[idx] = fluid_at(i - kPad, j - kPad, k - kPad);
+        double fluid = 0;
         for (const auto& c : d3q19::c)
-          fluid += solid(i - kPad + c[0], j - kPad + c[1], k - kPad + c[2]) ? 0 : 1;
-        // fluid / 19 is exactly 1 (or 0) when all 19 points agree.
-        smooth_[idx] = static_cast<float>(fluid) / 19.0f;
+          fluid += fluid_at(i - kPad + c[0], j - kPad + c[1], k - kPad + c[2]);
+        // fluid / 19 is exactly 1 (or 0) when all 19 points are wholly fluid (or solid).
+        smooth_[idx] = static_cast<float>(fluid / 19.0);
       }
 
   for (int k = 0; k < n[2]; ++k)
     for (int j = 0; j < n[1]; ++j)
       for (int i = 0; i < n[0]; ++i) {
-        if (!solid(i, j, k)) continue;
+        if (fluid_at(i, j, k) == 1.0f) continue;
         const double r = (voxels.origin + h_ * Eigen::Vector3d(i, j, k)).norm();
         // The smoothed porosity is < 1 up to sqrt(2) h (edge stencil point) plus sqrt(3) h
         // (trilinear cell) from a solid voxel centre; 2 sqrt(3) h bounds both.

@@ -1,9 +1,10 @@
 #pragma once
 // The smoothed reference porosity of one shape (paper, appendix "Representation of a
 // particle in the fluid"): the shape's voxelization at the reference spacing h (half the
-// fluid spacing) gives a 0/1 porosity; a fluid node mapped into the shape frame gets the
-// average of that porosity over the mapped point and its q - 1 = 18 D3Q19 neighbours at
-// spacing h.
+// fluid spacing) gives each voxel's porosity, its fluid volume fraction 1 - fill (the paper
+// uses 0/1 voxels; fractions make the embedded volume match the body's, docs/method.md
+// "Reference lattice"); a fluid node mapped into the shape frame gets the average of that
+// porosity over the mapped point and its q - 1 = 18 D3Q19 neighbours at spacing h.
 //
 // Two lookups (scene key fluid.porosity_lookup, docs/performance.md compares them):
 // * trilinear interpolation of the reference lattice: the porosity of a node, and with it the
@@ -17,7 +18,7 @@
 //   nearest to it (19 loads). In the lattice frame the stencil point of a node towards a
 //   neighbour is the neighbour's stencil point towards the node (spacing h = dx / 2), so a
 //   node with d = 0 never neighbours a node with d = 1 and the band holds every boundary
-//   link, at any orientation. d changes in steps of 1/19 as the body moves, and the band
+//   link, at any orientation. d changes by jumps as the body moves, and the band
 //   (0 < d < 1) is narrower than the trilinear one.
 #include <Eigen/Dense>
 
@@ -54,16 +55,16 @@ class ReferencePorosity {
 
   // Largest distance of a point with porosity < 1 from the shape-frame origin (m).
   double support_radius() const { return support_radius_; }
-  // Largest distance of a solid voxel corner from the shape-frame origin (m).
+  // Largest distance of a corner of a voxel holding solid from the shape-frame origin (m).
   double surface_radius() const { return surface_radius_; }
 
  private:
   static constexpr int kPad = 2;  // one layer for the 19-point stencil, one for trilinear
   double h_ = 0;
   Eigen::Vector3d shift_ = Eigen::Vector3d::Zero();
-  std::array<int, 3> m_{0, 0, 0};    // padded extents
-  std::vector<float> smooth_;        // averaged porosity, padded lattice, x fastest
-  std::vector<std::uint8_t> fluid_;  // 1 where the voxel is fluid, same padded lattice
+  std::array<int, 3> m_{0, 0, 0};  // padded extents
+  std::vector<float> smooth_;      // averaged porosity, padded lattice, x fastest
+  std::vector<float> fluid_;       // fluid fraction of each voxel (1 - fill), same lattice
   double support_radius_ = 0;
   double surface_radius_ = 0;
 
@@ -102,7 +103,7 @@ inline double ReferencePorosity::at(const Eigen::Vector3d& ref) const {
 
 inline double ReferencePorosity::nearest(const Eigen::Vector3d& ref,
                                          const std::array<Eigen::Vector3d, 19>& stencil) const {
-  int fluid = 0;
+  float fluid = 0;
   for (const Eigen::Vector3d& o : stencil) {
     const double x = ref.x() + o.x() + 0.5, y = ref.y() + o.y() + 0.5, z = ref.z() + o.z() + 0.5;
     if (!(x >= 0 && y >= 0 && z >= 0 && x < m_[0] && y < m_[1] && z < m_[2])) {
@@ -114,7 +115,7 @@ inline double ReferencePorosity::nearest(const Eigen::Vector3d& ref,
     fluid +=
         fluid_[i + static_cast<std::size_t>(m_[0]) * (j + static_cast<std::size_t>(m_[1]) * k)];
   }
-  return static_cast<float>(fluid) / 19.0f;  // as the averaged lattice: exactly 0 or 1 at the ends
+  return fluid / 19.0f;  // as the averaged lattice: exactly 0 or 1 at the ends
 }
 
 }  // namespace lbdem::hlbm

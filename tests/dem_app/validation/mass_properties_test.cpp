@@ -1,12 +1,9 @@
 // The mass and inertia the engine gives a body against the closed forms of its shape: a
 // homogeneous cuboid, m = rho a b c and I = m / 12 diag(b^2 + c^2, a^2 + c^2, a^2 + b^2) in the
 // frame of its edges, turned by the scene's orientation (the bodies of force_torque.yaml).
-//
-// Known off (issue 15): without a fluid lattice the shape is voxelized at 40 voxels across its
-// characteristic length (build_shape.cpp) and the mass comes from the voxel count; the edges
-// 0.01 and 0.02 m are not multiples of h = 0.03 / 40 m, so 14 x 27 x 40 voxels give a mass
-// 6.3 % high, the inertia 7.6 % off (measured). The test is disabled for gtest and
-// registered in CTest as dem_known_off_cuboid_mass_closed_form with WILL_FAIL.
+// The edges 0.01 and 0.02 m are not multiples of the voxel spacing 0.03 / 40 m: a mass from
+// the 0/1 voxel count (14 x 27 x 40) was 6.3 % high and the inertia 7.6 % off; the mass
+// properties now come from the solid itself (coupler_lib/geometry/mass_properties.hpp).
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -19,7 +16,7 @@
 namespace lbdem {
 namespace {
 
-TEST(ShapeMassProperties, DISABLED_CuboidMatchesClosedForm) {
+TEST(ShapeMassProperties, CuboidMatchesClosedForm) {
   const DemSetup setup = test::load_setup(test::validation_scene("force_torque.yaml"), true);
   LammpsEngine engine(MPI_COMM_WORLD, setup);
   const Eigen::Vector3d edges(0.01, 0.02, 0.03);  // the scene's brick

@@ -16,7 +16,7 @@
 namespace lbdem::hlbm::test {
 
 // Voxels of spacing h over a cube of `half` voxels each side of the origin (voxel centres at
-// h * (i - (n-1)/2)), solid where inside(centre).
+// h * (i - (n-1)/2)), solid (fill 1) where inside(centre).
 inline Voxels voxelize(double h, int n, const std::function<bool(const Eigen::Vector3d&)>& in) {
   Voxels v;
   v.h = h;
@@ -28,6 +28,7 @@ inline Voxels voxelize(double h, int n, const std::function<bool(const Eigen::Ve
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i, ++idx)
         v.solid[idx] = in(v.origin + h * Eigen::Vector3d(i, j, k)) ? 1 : 0;
+  v.fill.assign(v.solid.begin(), v.solid.end());
   return v;
 }
 
