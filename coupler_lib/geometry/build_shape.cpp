@@ -40,6 +40,14 @@ double clump_reach(const Clump& c, const Eigen::Vector3d& center) {
 
 }  // namespace
 
+ShapeParams scaled_params(const ShapeParams& p, double factor) {
+  ShapeParams q = p;
+  q.size *= factor;
+  for (double& e : q.extents) e *= factor;
+  q.scale *= factor;
+  return q;
+}
+
 SolidGeometry make_solid(const ShapeParams& p) {
   const Eigen::Vector3d ext(p.extents[0], p.extents[1], p.extents[2]);
   if (p.kind == "sphere") return SolidGeometry::sphere(p.size / 2);
@@ -117,6 +125,15 @@ Shape build_shape(const ShapeParams& p, double h) {
   }
   shape.clump = translated(std::move(clump), c);
   shape.voxels = translated(std::move(vox), c);
+  if (p.hydrodynamic_scale != 1) {
+    // The fluid's reference lattice is the voxelization of the scaled solid, at the same
+    // spacing, in its own centroid frame (the scaled solid's centroid is the scaled centroid up
+    // to the voxelization); its bounding radius sets which fluid ranks receive the body.
+    Voxels scaled = voxelize(make_solid(scaled_params(p, p.hydrodynamic_scale)), h, kVoxelPad);
+    const Eigen::Vector3d cs = mass_properties(scaled).centroid;
+    shape.bounding_radius = bounding_radius(scaled, cs);
+    shape.voxels = translated(std::move(scaled), cs);
+  }
   return shape;
 }
 
