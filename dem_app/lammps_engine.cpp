@@ -31,7 +31,8 @@ void external_callback(void* ptr, Step, int nlocal, Tag* tags, double**, double*
   ctx->tags.assign(all_tags, all_tags + nall);
   ctx->lubrication->apply({nlocal, nall, ctx->tags.data(),
                            static_cast<double**>(lammps_extract_atom(ctx->lmp, "x")),
-                           static_cast<double**>(lammps_extract_atom(ctx->lmp, "v")), fext});
+                           static_cast<double**>(lammps_extract_atom(ctx->lmp, "v")), fext,
+                           static_cast<double**>(lammps_extract_atom(ctx->lmp, "omega")), torque});
 }
 
 template <class Context, class Step, class Tag>

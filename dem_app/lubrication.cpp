@@ -138,7 +138,19 @@ void Lubrication::apply(const AtomView& a) {
       const double side = w.lower ? -1.0 : 1.0;
       const double gap = side * (w.position - a.x[i][w.axis]) - r;
       const double c = lubrication_resistance(law_, r, 0.0, gap);
-      if (c != 0) a.f[i][w.axis] -= c * a.v[i][w.axis];
+      if (c == 0) continue;
+      a.f[i][w.axis] -= c * a.v[i][w.axis];
+      // Sliding and rolling parallel to the wall (lubrication_law.hpp): with n = side e_axis,
+      // the parts of v and omega along the other two axes.
+      const SlidingResistance s = wall_sliding_resistance(law_, r, gap);
+      const int p = (w.axis + 1) % 3, q = (w.axis + 2) % 3;
+      // (W x n) and (n x U) for n = side e_axis, restricted to the wall's plane.
+      const double wxn_p = a.omega[i][q] * side, wxn_q = -a.omega[i][p] * side;
+      const double nxu_p = -side * a.v[i][q], nxu_q = side * a.v[i][p];
+      a.f[i][p] -= s.translation * a.v[i][p] + s.coupling * wxn_p;
+      a.f[i][q] -= s.translation * a.v[i][q] + s.coupling * wxn_q;
+      a.torque[i][p] -= s.coupling * nxu_p + s.rotation * a.omega[i][p];
+      a.torque[i][q] -= s.coupling * nxu_q + s.rotation * a.omega[i][q];
     }
   }
 }

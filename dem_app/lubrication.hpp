@@ -29,7 +29,9 @@ struct AtomView {
   const std::int64_t* tag = nullptr;  // converted to 64 bit by the caller if needed
   double** x = nullptr;
   double** v = nullptr;
-  double** f = nullptr;  // only [0, nlocal) is written
+  double** f = nullptr;       // only [0, nlocal) is written
+  double** omega = nullptr;   // angular velocities (the wall's sliding part needs them)
+  double** torque = nullptr;  // only [0, nlocal) is written
 };
 
 class Lubrication {

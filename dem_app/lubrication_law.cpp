@@ -24,4 +24,13 @@ double lubrication_resistance(const LubricationLaw& law, double a1, double a2, d
          (squeeze_lambda(g, a1, h) - squeeze_lambda(g, a1, law.cutoff));
 }
 
+SlidingResistance wall_sliding_resistance(const LubricationLaw& law, double a, double gap) {
+  if (gap >= law.cutoff) return {};
+  // ln(a / h) - ln(a / h_c)
+  const double l = std::log(law.cutoff / std::max(gap, law.min_gap));
+  const double mu = law.viscosity, pi = std::numbers::pi;
+  return {6 * pi * mu * a * 8.0 / 15.0 * l, 6 * pi * mu * a * a * 2.0 / 15.0 * l,
+          8 * pi * mu * a * a * a * 2.0 / 5.0 * l};
+}
+
 }  // namespace lbdem

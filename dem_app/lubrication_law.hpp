@@ -37,4 +37,21 @@ double squeeze_lambda(const SqueezeCoefficients& g, double a1, double h);
 // the unit normal from sphere 1 towards sphere 2 (or the wall). Zero for gap >= h_c.
 double lubrication_resistance(const LubricationLaw& law, double a1, double a2, double gap);
 
+// Sliding and rolling next to a plane wall (Goldman, Cox & Brenner 1967; O'Neill & Stewartson
+// 1967): the log-singular parts of the resistance of a sphere of radius a translating parallel
+// to the wall (6 pi mu a 8/15 ln(a/h)), rotating about an axis parallel to it
+// (8 pi mu a^3 2/5 ln(a/h)) and their coupling (6 pi mu a^2 2/15 ln(a/h) = 8 pi mu a^2 1/10
+// ln(a/h), the same both ways by reciprocity), each minus its value at h_c and held at h_min
+// like the normal part. With n the unit normal from the sphere towards the wall, U_t and W_t the
+// velocity and angular velocity parallel to the wall, the correction's force and torque are
+//   F = -translation U_t - coupling (W_t x n),   T = -coupling (n x U_t) - rotation W_t,
+// which dissipates U.A.U + 2 coupling W.(n x U) + W.C.W >= 0 (8/15 x 2/5 > (2/15)^2 x 6/8).
+// Rotation about the normal has no log singularity and is left to the lattice.
+struct SlidingResistance {
+  double translation = 0;  // N s/m
+  double coupling = 0;     // N s
+  double rotation = 0;     // N m s
+};
+SlidingResistance wall_sliding_resistance(const LubricationLaw& law, double a, double gap);
+
 }  // namespace lbdem

@@ -40,6 +40,14 @@ double clump_reach(const Clump& c, const Eigen::Vector3d& center) {
 
 }  // namespace
 
+ShapeParams scaled_params(const ShapeParams& p, double factor) {
+  ShapeParams q = p;
+  q.size *= factor;
+  for (double& e : q.extents) e *= factor;
+  q.scale *= factor;
+  return q;
+}
+
 SolidGeometry make_solid(const ShapeParams& p) {
   const Eigen::Vector3d ext(p.extents[0], p.extents[1], p.extents[2]);
   if (p.kind == "sphere") return SolidGeometry::sphere(p.size / 2);
@@ -118,6 +126,17 @@ Shape build_shape(const ShapeParams& p, double h) {
   }
   shape.clump = translated(std::move(clump), c);
   shape.voxels = translated(std::move(vox), c);
+  if (p.hydrodynamic_scale != 1) {
+    // The fluid's reference lattice is the voxelization of the scaled solid, at the same
+    // spacing, in its own centroid frame; its bounding radius sets which fluid ranks receive
+    // the body.
+    const SolidGeometry scaled_solid = make_solid(scaled_params(p, p.hydrodynamic_scale));
+    Voxels scaled = voxelize(scaled_solid, h, kVoxelPad);
+    const Eigen::Vector3d cs = mass_properties(scaled_solid).centroid;
+    shape.reference_volume = mass_properties(scaled).volume;
+    shape.bounding_radius = bounding_radius(scaled, cs);
+    shape.voxels = translated(std::move(scaled), cs);
+  }
   return shape;
 }
 

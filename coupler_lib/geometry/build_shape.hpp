@@ -1,8 +1,10 @@
 #pragma once
 // One call from scene parameters to everything a side needs about a shape: the exact mass
 // properties, the reference voxelization in the shape frame (with the volume it embeds), the
-// contact clump and its quality, and the bounding radius. Both binaries call this with the same spacing and get
-// identical numbers.
+// contact clump and its quality, and the bounding radius. Both binaries call this with the same
+// spacing and get identical numbers. With hydrodynamic_scale != 1, `voxels`,
+// `reference_volume` and `bounding_radius` are those of the scaled shape (what the fluid sees);
+// mass properties and the clump stay the true shape's.
 #include "coupler_lib/geometry/shape.hpp"
 #include "coupler_lib/geometry/shape_params.hpp"
 #include "coupler_lib/geometry/solid_geometry.hpp"
@@ -11,6 +13,9 @@ namespace lbdem {
 
 // The solid described by the parameters (reads and checks the STL for kind stl).
 SolidGeometry make_solid(const ShapeParams& params);
+
+// The same shape scaled by `factor` about the origin of its input frame.
+ShapeParams scaled_params(const ShapeParams& params, double factor);
 
 // Throws ShapeError (message starts with params.where) for unreadable or invalid input.
 Shape build_shape(const ShapeParams& params, double voxel_spacing);

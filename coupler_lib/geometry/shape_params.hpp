@@ -30,6 +30,9 @@ struct ShapeParams {
   std::string file;       // stl: absolute path
   double scale = 1;       // stl: vertex coordinates are multiplied by this
   double voxel_size = 0;  // m; 0: use the default (scene/shape_catalogue.hpp)
+  // The fluid sees the shape scaled by this about its centroid; mass, inertia and contacts keep
+  // the true shape (docs/lubrication.md, "Hydrodynamic radius").
+  double hydrodynamic_scale = 1;
   ClumpParams clump;
   std::string where;  // "scene.yaml:12: shapes[0]", for errors found after parsing
 };

@@ -98,6 +98,11 @@ std::vector<ShapeParams> parse_shapes(Section& root) {
                                   "voxel spacing in m (0: half the fluid spacing, or size/40 "
                                   "without a fluid)",
                                   Bounds::non_negative());
+    sh.hydrodynamic_scale = s.get<double>(
+        "hydrodynamic_scale", 1.0,
+        "factor on the shape's size as the fluid sees it (1: the true shape; mass and contacts "
+        "always use the true shape)",
+        Bounds::closed(0.5, 2.0));
     if (auto c = s.optional_section("clump", "contact clump: {file: path} or {method: ...}"))
       sh.clump = parse_clump(*c);
     else

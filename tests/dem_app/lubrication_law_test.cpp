@@ -93,6 +93,27 @@ std::string error_of(const std::string& lube) {
   return "";
 }
 
+// Goldman, Cox & Brenner (1967) / O'Neill & Stewartson (1967): the log coefficients 8/15, 2/15
+// (6 pi mu a^2) and 2/5 (8 pi mu a^3), zero at and beyond h_c, held below h_min, and a
+// positive-definite translation-rotation resistance (the correction only dissipates).
+TEST(LubricationLaw, WallSlidingFollowsTheLogTermsAndDissipates) {
+  const LubricationLaw law{2e-3, 1e-4, 1e-6};
+  const double a = 1e-3, pi = std::numbers::pi, h = 1e-5;
+  const SlidingResistance s = wall_sliding_resistance(law, a, h);
+  const double l = std::log(law.cutoff / h);
+  EXPECT_NEAR(s.translation, 6 * pi * law.viscosity * a * 8.0 / 15.0 * l, 1e-15);
+  EXPECT_NEAR(s.coupling, 8 * pi * law.viscosity * a * a * 0.1 * l, 1e-18);
+  EXPECT_NEAR(s.rotation, 8 * pi * law.viscosity * a * a * a * 0.4 * l, 1e-21);
+  EXPECT_EQ(wall_sliding_resistance(law, a, law.cutoff).translation, 0.0);
+  EXPECT_EQ(wall_sliding_resistance(law, a, 2 * law.cutoff).rotation, 0.0);
+  EXPECT_EQ(wall_sliding_resistance(law, a, 1e-9).translation,
+            wall_sliding_resistance(law, a, law.min_gap).translation);
+  EXPECT_EQ(wall_sliding_resistance(law, a, -1e-6).coupling,
+            wall_sliding_resistance(law, a, law.min_gap).coupling);
+  EXPECT_GT(s.translation * s.rotation, s.coupling * s.coupling);
+  EXPECT_GT(wall_sliding_resistance(law, a, 2e-6).translation, s.translation);
+}
+
 TEST(LubricationKeys, OffByDefaultAndAcceptedWhenComplete) {
   EXPECT_EQ(error_of("{}"), "");
   EXPECT_EQ(error_of("{enabled: true, cutoff: 1e-4, min_gap: 1e-6, viscosity: 1e-3}"), "");

@@ -173,6 +173,38 @@ TEST(BuildShape, ClumpFileAtTheWrongScaleIsRejected) {
   }
 }
 
+// The paper's enlarged hydrodynamic radius: the fluid's voxels are those of the scaled sphere,
+// the mass, inertia and contact sphere stay those of the true one.
+TEST(BuildShape, HydrodynamicScaleEnlargesOnlyWhatTheFluidSees) {
+  const auto s = parse(R"(
+shapes:
+  - {name: true, kind: sphere, diameter: 1.0e-3}
+  - {name: wet, kind: sphere, diameter: 1.0e-3, hydrodynamic_scale: 1.05}
+)");
+  EXPECT_DOUBLE_EQ(s[0].hydrodynamic_scale, 1.0);
+  EXPECT_DOUBLE_EQ(s[1].hydrodynamic_scale, 1.05);
+  const double h = 1.0e-3 / 32;
+  const Shape a = build_shape(s[0], h), b = build_shape(s[1], h);
+  EXPECT_EQ(a.mass.volume, b.mass.volume);
+  EXPECT_EQ((a.mass.inertia - b.mass.inertia).norm(), 0.0);
+  ASSERT_EQ(b.clump.size(), 1u);
+  EXPECT_DOUBLE_EQ(b.clump.radii[0], 0.5e-3);
+  // The fluid's lattice is the voxelization of a 1.05 mm sphere at the same spacing, centred
+  // on the body.
+  ShapeParams big = s[0];
+  big.size = 1.05e-3;
+  const Shape c = build_shape(big, h);
+  EXPECT_EQ(b.voxels.solid, c.voxels.solid);
+  EXPECT_EQ(b.voxels.n, c.voxels.n);
+  const double exact = std::acos(-1.0) / 6 * std::pow(1.05e-3, 3);
+  EXPECT_NEAR(mass_properties(b.voxels).volume / exact, 1.0, 0.02);
+  EXPECT_LT(mass_properties(b.voxels).centroid.norm(), 1e-12);
+  EXPECT_NEAR(b.bounding_radius / a.bounding_radius, 1.05, 0.01);
+  EXPECT_NE(parse_error("shapes: [{name: a, kind: sphere, diameter: 1, hydrodynamic_scale: 3}]")
+                .find("hydrodynamic_scale"),
+            std::string::npos);
+}
+
 TEST(BuildShape, TooCoarseSpacingIsAnError) {
   const auto s = parse("shapes: [{name: b, kind: sphere, diameter: 0.01}]");
   EXPECT_THROW(build_shape(s[0], 0.2), ShapeError);
