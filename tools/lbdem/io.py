@@ -11,10 +11,19 @@ import csv
 import os
 
 import numpy as np
-import yaml
+
+from . import scene as scene_json
 
 
-def load_scene(path):
+def load_scene(path, build=None):
+    """The scene's resolved keys, defaults filled in, as the programs read them (scene.py)."""
+    return scene_json.load(path, build)
+
+
+def read_scene_yaml(path):
+    """A scene as written, only to write a variant of it (never to read values: YAML 1.1 reads
+    `1e-06` as a string and knows no defaults; values come from load_scene)."""
+    import yaml
     with open(path) as f:
         return yaml.safe_load(f)
 
