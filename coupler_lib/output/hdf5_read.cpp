@@ -49,6 +49,7 @@ void read_strings(hid_t set, hid_t file_type, hid_t space, size_t count, H5Array
   if (H5Tis_variable_str(file_type) > 0) {
     H5Handle mem(H5Tcopy(H5T_C_S1), H5Tclose, where);
     h5_check(H5Tset_size(mem, H5T_VARIABLE), where);
+    h5_check(H5Tset_cset(mem, H5Tget_cset(file_type)), where);  // h5py writes UTF-8
     std::vector<char*> raw(count, nullptr);
     h5_check(H5Dread(set, mem, H5S_ALL, H5S_ALL, H5P_DEFAULT, raw.data()), where);
     for (char* s : raw) a.strings.emplace_back(s ? s : "");
@@ -58,6 +59,7 @@ void read_strings(hid_t set, hid_t file_type, hid_t space, size_t count, H5Array
   const size_t width = H5Tget_size(file_type);
   H5Handle mem(H5Tcopy(H5T_C_S1), H5Tclose, where);
   h5_check(H5Tset_size(mem, width), where);
+  h5_check(H5Tset_cset(mem, H5Tget_cset(file_type)), where);
   std::vector<char> raw(count * width);
   h5_check(H5Dread(set, mem, H5S_ALL, H5S_ALL, H5P_DEFAULT, raw.data()), where);
   for (size_t i = 0; i < count; ++i) {

@@ -33,6 +33,7 @@ struct Set {
   std::vector<double> numbers;
   size_t width = 0;
   std::vector<std::string> strings;
+  bool utf8 = false;  // as h5py writes strings
 };
 
 Set numbers(const std::string& name, std::vector<double> v, size_t width) {
@@ -43,10 +44,11 @@ Set numbers(const std::string& name, std::vector<double> v, size_t width) {
   return s;
 }
 
-Set strings(const std::string& name, std::vector<std::string> v) {
+Set strings(const std::string& name, std::vector<std::string> v, bool utf8 = false) {
   Set s;
   s.name = name;
   s.strings = std::move(v);
+  s.utf8 = utf8;
   return s;
 }
 
@@ -60,6 +62,7 @@ std::string write_h5(const std::string& name, const std::vector<Set>& sets) {
       const hsize_t n = s.strings.size();
       const hid_t type = H5Tcopy(H5T_C_S1);
       H5Tset_size(type, H5T_VARIABLE);
+      if (s.utf8) H5Tset_cset(type, H5T_CSET_UTF8);
       const hid_t space = H5Screate_simple(1, &n, nullptr);
       const hid_t set =
           H5Dcreate2(file, s.name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
@@ -103,7 +106,7 @@ TEST(BodiesFileHdf5, SameBodiesAsTheCsvFile) {
                   numbers("orientation", {2, 0, 0, 0, 1, 0, 0, 1}, 4),
                   numbers("velocity", {0.1, 0.2, 0.3, 0, 0, -0.5}, 3),
                   numbers("angular_velocity", {1, 2, 3, 0, 0, 0}, 3),
-                  numbers("density", {2500, 1200}, 0), strings("shape", {"cube", "ball"})});
+                  numbers("density", {2500, 1200}, 0), strings("shape", {"cube", "ball"}, true)});
   const auto csv = std::filesystem::temp_directory_path() / "lbdem_bodies_file_full_h5.csv";
   std::ofstream(csv) << "x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,density,shape\n"
                         "0.02,0.03,0.04,2,0,0,0,0.1,0.2,0.3,1,2,3,2500,cube\n"
