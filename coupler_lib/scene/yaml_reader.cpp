@@ -328,6 +328,11 @@ std::optional<Section> Section::optional_section(std::string_view key, std::stri
   return Section(n, source_, key_path(key));
 }
 
+Section Section::section_or_defaults(std::string_view key, std::string_view doc) {
+  if (auto s = optional_section(key, doc)) return *s;
+  return Section(YAML::Node(YAML::NodeType::Map), source_, key_path(key));
+}
+
 std::vector<Section> Section::list(std::string_view key, std::string_view doc) {
   declare(key);
   std::vector<Section> out;

@@ -93,6 +93,9 @@ class Section {
   // Nested mappings and lists of mappings.
   Section section(std::string_view key, std::string_view doc);
   std::optional<Section> optional_section(std::string_view key, std::string_view doc);
+  // The mapping at `key`, or an empty one when the key is absent: for sections whose absence
+  // means "all defaults", so that their keys are read, and recorded, with their defaults.
+  Section section_or_defaults(std::string_view key, std::string_view doc);
   std::vector<Section> list(std::string_view key, std::string_view doc);
 
   // Reject keys that were not declared by any read above (with a did-you-mean).
