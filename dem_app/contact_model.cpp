@@ -34,12 +34,6 @@ ContactModel make_contact_model(const DemMaterial& m, const std::string& where) 
   return c;
 }
 
-double rayleigh_time(double radius, double density, const DemMaterial& m) {
-  const double g = m.young_modulus / (2.0 * (1.0 + m.poisson_ratio));
-  const double beta = 0.8766 + 0.1630 * m.poisson_ratio;
-  return std::numbers::pi * radius / beta * std::sqrt(density / g);
-}
-
 double hertz_contact_time(double radius, double mass, double speed, const DemMaterial& m) {
   // Two like spheres: E* = E / (2 (1 - nu^2)), R_eff = r / 2, m_eff = m / 2 (Hertz theory,
   // e.g. Johnson, Contact Mechanics, sec. 11.4).

@@ -21,10 +21,6 @@ struct ContactModel {
 // Resolves the restitution map; throws SceneError naming the key when e is out of reach.
 ContactModel make_contact_model(const DemMaterial& m, const std::string& where);
 
-// Rayleigh time of a sphere of radius r (paper, table of hindered-settling parameters):
-//   t_R = pi r / beta sqrt(rho / G),  G = E / (2 (1 + nu)),  beta = 0.8766 + 0.1630 nu.
-double rayleigh_time(double radius, double density, const DemMaterial& m);
-
 // Duration of a Hertz binary collision of two equal spheres (radius r, masses m) at
 // approach speed v, without damping: t_c = 2.868 (m_eff^2 / (R_eff E*^2 v))^(1/5).
 double hertz_contact_time(double radius, double mass, double speed, const DemMaterial& m);

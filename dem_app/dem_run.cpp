@@ -30,13 +30,10 @@ std::string describe_engine_inputs(const DemSetup& setup) {
   std::ostringstream s;
   const auto& m = setup.params.material;
   const ContactModel c = make_contact_model(m, setup.file);
-  double t_r = std::numeric_limits<double>::infinity();
+  const double t_r = smallest_rayleigh_time(setup.params, setup.shapes, setup.bodies);
   size_t spheres = 0;
-  for (const auto& b : setup.bodies) {
-    const Shape& sh = setup.shapes[static_cast<size_t>(b.shape)];
-    t_r = std::min(t_r, rayleigh_time(time_step_radius(sh, setup.params), b.density, m));
-    spheres += sh.clump.radii.size();
-  }
+  for (const auto& b : setup.bodies)
+    spheres += setup.shapes[static_cast<size_t>(b.shape)].clump.radii.size();
   s << setup.bodies.size() << " bodies, " << spheres << " clump spheres; E = " << m.young_modulus
     << " Pa, nu = " << m.poisson_ratio << ", mu = " << m.friction << ", e = " << m.restitution;
   if (c.undamped)

@@ -7,15 +7,12 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "coupler_lib/scene/scene_checks.hpp"
 #include "dem_app/contact_model.hpp"
 #include "dem_app/lubrication_setup.hpp"
 #include "dem_app/quaternion.hpp"
 
 namespace lbdem {
-
-double smallest_sphere_radius(const Shape& shape) {
-  return *std::min_element(shape.clump.radii.begin(), shape.clump.radii.end());
-}
 
 DemSetup make_dem_setup(const Scene& scene, std::vector<Shape> shapes, bool coupled) {
   if (!scene.dem) throw SceneError(scene.file + ": the scene has no 'dem' section");
@@ -24,15 +21,11 @@ DemSetup make_dem_setup(const Scene& scene, std::vector<Shape> shapes, bool coup
   s.params = *scene.dem;
   s.shapes = std::move(shapes);
   s.bodies = scene.bodies;
-  if (s.params.has_box) {
-    s.box_lo = s.params.box_lo;
-    s.box_hi = s.params.box_hi;
-  } else if (scene.fluid) {
-    s.box_lo = {0, 0, 0};
-    s.box_hi = scene.fluid->domain;
-  } else {
+  const auto box = dem_box(scene);
+  if (!box)
     throw SceneError(scene.file + ": dem.box: required when the scene has no fluid section");
-  }
+  s.box_lo = box->lo;
+  s.box_hi = box->hi;
   if (coupled && s.params.buoyancy_fluid_density > 0)
     throw SceneError(scene.file +
                      ": dem.buoyancy_fluid_density: only for DEM-only scenes; in a coupled run "
@@ -79,21 +72,8 @@ void validate_dem_setup(const DemSetup& s) {
   check_lubrication_step(s, dem_time_step(s));
 }
 
-double time_step_radius(const Shape& shape, const DemParams& params) {
-  if (params.dt_rule == "particle")
-    return std::cbrt(3.0 * shape.mass.volume / (4.0 * std::numbers::pi));
-  return smallest_sphere_radius(shape);
-}
-
 double dem_time_step(const DemSetup& setup) {
-  if (setup.params.dt > 0) return setup.params.dt;
-  double t = std::numeric_limits<double>::infinity();
-  for (const auto& b : setup.bodies) {
-    const Shape& sh = setup.shapes[static_cast<size_t>(b.shape)];
-    t = std::min(
-        t, rayleigh_time(time_step_radius(sh, setup.params), b.density, setup.params.material));
-  }
-  return setup.params.dt_fraction * t;
+  return dem_time_step(setup.params, setup.shapes, setup.bodies);
 }
 
 }  // namespace lbdem

@@ -10,6 +10,7 @@
 #include "coupler_lib/scene/bodies_section.hpp"
 #include "coupler_lib/scene/body_placement.hpp"
 #include "coupler_lib/scene/dem_section.hpp"
+#include "coupler_lib/scene/dem_time_step.hpp"
 #include "coupler_lib/scene/scene.hpp"
 
 namespace lbdem {
@@ -33,14 +34,7 @@ DemSetup make_dem_setup(const Scene& scene, std::vector<Shape> shapes, bool coup
 // box or through a wall, overlapping bodies, walls on periodic axes, unreachable restitution.
 void validate_dem_setup(const DemSetup& setup);
 
-// Smallest clump-sphere radius of a shape.
-double smallest_sphere_radius(const Shape& shape);
-
-// Radius whose Rayleigh time sets the DEM step for a body of this shape (dem.dt_rule): the
-// smallest clump sphere, or the volume-equivalent sphere of the body.
-double time_step_radius(const Shape& shape, const DemParams& params);
-
-// DEM step: dem.dt if given, else dt_fraction x the smallest Rayleigh time over the bodies.
+// DEM step of the setup's bodies (coupler_lib/scene/dem_time_step.hpp).
 double dem_time_step(const DemSetup& setup);
 
 }  // namespace lbdem

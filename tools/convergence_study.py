@@ -30,19 +30,25 @@ import tempfile
 import yaml
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+from lbdem import io  # noqa: E402
+from lbdem import scene as lbdem_scene  # noqa: E402
+
 SCENES = os.path.join(HERE, "..", "configs", "validation", "fluid")
 LINE = re.compile(r"^validation (\S+): cells (\d+)x(\d+)x(\d+), steps (\d+), t = (\S+) s, "
                   r"L2 relative velocity error (\S+), max \|u - u_ref\| (\S+) m/s, "
                   r"run time (\S+) s$", re.M)
 
 
-def scene_at(scene_file, n):
-    """The scene text with N cells along its longest axes."""
-    with open(scene_file) as f:
-        scene = yaml.safe_load(f)
+def scene_at(scene_file, n, build=None):
+    """The scene text with N cells along its longest axes (values as the programs read them,
+    lbdem/scene.py; the variant is written from the file as given)."""
+    resolved = lbdem_scene.resolve(build, scene_file)
+    scene = io.read_scene_yaml(scene_file)
     fluid = scene["fluid"]
-    dx = float(fluid["dx"])
-    domain = [float(v) for v in fluid["domain"]]
+    fluid.pop("resolution", None)  # replaced by dx
+    dx = resolved["derived"]["fluid"]["dx"]
+    domain = resolved["scene"]["fluid"]["domain"]
     longest = max(domain)
     new_dx = longest / n
     fluid["domain"] = [longest if abs(d - longest) < 1e-9 * longest else round(d / dx) * new_dx
@@ -57,7 +63,8 @@ def scene_at(scene_file, n):
 def run_case(app, launch, scene_file, n, work):
     path = os.path.join(work, f"{os.path.basename(scene_file)[:-5]}_n{n}.yaml")
     with open(path, "w") as f:
-        f.write(scene_at(scene_file, n))
+        # app is <build>/fluid_app/fluid_app
+        f.write(scene_at(scene_file, n, os.path.dirname(os.path.dirname(app))))
     cmd = shlex.split(launch) + [app, path]
     p = subprocess.run(cmd, cwd=work, capture_output=True, text=True)
     m = LINE.search(p.stdout)

@@ -28,12 +28,14 @@ def main():
     p.add_argument("--sweeps", type=int, default=1000)
     p.add_argument("--seed", type=int, default=1)
     p.add_argument("--out", required=True)
+    p.add_argument("--format", choices=["csv", "h5"], default="csv",
+                   help="bodies file format (docs/study.md, 'Bodies from a file')")
     args = p.parse_args()
     os.makedirs(args.out, exist_ok=True)
     base = packing.make_packing(args.bodies, args.sweeps, args.seed, args.diameter)
     for phi in [packing.PHI_START] + args.phi:
         s = base.scaled(phi)
-        path = os.path.join(args.out, f"packing_phi{phi:.3f}.csv")
+        path = os.path.join(args.out, f"packing_phi{phi:.3f}.{args.format}")
         s.save(path, packing.PHI_START)
         r, g = analysis.radial_distribution(s.x, np.full(3, s.box), bins=20)
         contact = g[r > s.d][0] if np.any(r > s.d) else float("nan")

@@ -16,6 +16,7 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 from lbdem import stability  # noqa: E402
+from lbdem import scene as lbdem_scene  # noqa: E402
 
 
 def main():
@@ -28,6 +29,7 @@ def main():
                     help="use the baseline's trace of an earlier run instead of running it")
     ap.add_argument("--out", default=os.path.join(HERE, "..", "runs", "stability"))
     args = ap.parse_args()
+    lbdem_scene.use_build(args.build)  # values of scenes come from this build
     names = args.only or list(stability.CASES)
     if (any(stability.CASES[n][2] == "vs_base" for n in names) and stability.BASE not in names
             and not (args.reuse_base and stability.trace(stability.BASE))):

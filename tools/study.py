@@ -14,6 +14,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from lbdem import study  # noqa: E402
+from lbdem import scene as lbdem_scene  # noqa: E402
 
 
 def plan(s, shapes, phis):
@@ -57,6 +58,7 @@ def main():
                    help="porosity + momentum exchange seconds per body and step at 6 cells per "
                         "diameter, for the cost estimates (docs/study.md)")
     args = p.parse_args()
+    lbdem_scene.use_build(args.build)  # values of scenes come from this build
     s = study.Study(study.load_study(args.study), args.build, args.out)
     shapes = args.shapes or s.c["shapes"]
     phis = args.phi or [float(v) for v in s.c["solid_fractions"]]

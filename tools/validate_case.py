@@ -22,6 +22,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from lbdem import io, references, run  # noqa: E402
+from lbdem import scene as lbdem_scene  # noqa: E402
 
 RESULTS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "runs", "validation",
                        "results.csv")
@@ -29,7 +30,7 @@ RESULTS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "runs",
 
 def case_name(args):
     """--case, or else the scene's name."""
-    return args.case or io.load_scene(args.scene)["name"]
+    return args.case or io.load_scene(args.scene, args.build)["name"]
 
 
 def append_row(case, resolution, tau, quantity, reference, result, error, wall, ranks):
@@ -42,11 +43,12 @@ def append_row(case, resolution, tau, quantity, reference, result, error, wall, 
                   f"{wall:.1f},{ranks}\n")
 
 
-def report(case, scene, quantity, reference, result, wall, ranks, tolerance):
-    s = io.load_scene(scene)
+def report(case, args, quantity, reference, result, wall, ranks, tolerance):
+    resolved = lbdem_scene.resolve(args.build, args.scene)
+    s, fluid = resolved["scene"], resolved["derived"]["fluid"]
     f = s.get("fluid", {})
     size = min((sh.get("diameter") or sh.get("edge") or 0) for sh in s.get("shapes", [{}]))
-    res = size / f["dx"] if f and size else float("nan")
+    res = size / fluid["dx"] if fluid and size else float("nan")
     error = abs(result - reference) / abs(reference)
     print(f"{case}: {quantity} = {result:.6g} (reference {reference:.6g}), relative error "
           f"{100 * error:.2f} %, resolution {res:.3g} cells, tau {f.get('tau')}, ranks {ranks}, "
@@ -86,7 +88,7 @@ def cmd_terminal(args):
     print(f"terminal: mean over t >= {(1 - args.window) * t_end:.4g} s; change across that window "
           f"{100 * change:+.3f} % of the mean (bound {100 * args.settled:.2f} %), ripple "
           f"(largest - smallest) {100 * spread:.2f} %")
-    failed = report(case_name(args), args.scene, "u_T (m/s)", args.reference, result, wall,
+    failed = report(case_name(args), args, "u_T (m/s)", args.reference, result, wall,
                     args.ranks, args.tolerance)
     if abs(change) > args.settled:
         print(f"FAILED: not settled, the speed changes by {100 * change:+.3f} % across the window")
@@ -108,7 +110,7 @@ def cmd_peak(args):
           f"{after:.5g} m/s ({100 * drop:.2f} % below the peak, bound "
           f"{100 * args.min_drop:.2f} %); "
           f"centre height {rows[0]['z']:.4g} -> {rows[-1]['z']:.4g} m")
-    failed = report(case_name(args), args.scene, "u_max (m/s)", args.reference, result, wall,
+    failed = report(case_name(args), args, "u_max (m/s)", args.reference, result, wall,
                     args.ranks, args.tolerance)
     if i_peak == len(speeds) - 1 or drop < args.min_drop:
         print("FAILED: no peak inside the run (the largest speed is not followed by a decrease "
@@ -140,7 +142,7 @@ def cmd_invariance(args):
     first, last = base[0][0], base[0][-1]
     print(f"invariance: body 0 from ({first['x']:.4g}, {first['y']:.4g}, {first['z']:.4g}) to "
           f"({last['x']:.4g}, {last['y']:.4g}, {last['z']:.4g}) m (positions wrapped into the box)")
-    s = io.load_scene(args.scene)
+    s = io.load_scene(args.scene, args.build)
     append_row(case_name(args), "", s["fluid"]["tau"], "largest relative trace difference", "0",
                f"{worst:.3g}", f"{worst:.3g}", sum(w for _, w, _ in runs),
                " ".join(args.ranks_list))
@@ -168,7 +170,7 @@ def cmd_drag(args):
     outside); the two definitions must agree within `balance` before K is compared.
     """
     wall, bodies = launch(args, args.ranks)
-    s = io.load_scene(args.scene)
+    s = io.load_scene(args.scene, args.build)
     f = s["fluid"]
     series = io.read_rows(io.series_path(args.scene))
     axis = max(range(3), key=lambda k: abs(f["body_force"][k]))
@@ -191,7 +193,7 @@ def cmd_drag(args):
           f"{balance:.5f} (bound 1 +- {args.balance:g})")
     print(f"drag: K from the sphere's load {fd / stokes:.4f}, from the box balance "
           f"{f_box / stokes:.4f}; Sangani-Acrivos {k_sa:.4f}, Hasimoto {k_h:.4f}")
-    failed = report(case_name(args), args.scene, "K", k_sa, fd / stokes, wall, args.ranks,
+    failed = report(case_name(args), args, "K", k_sa, fd / stokes, wall, args.ranks,
                     args.tolerance)
     if abs(balance - 1) > args.balance:
         print(f"FAILED: the sphere's load differs from the box balance by "
@@ -206,7 +208,7 @@ def cmd_spin(args):
     The periodic images change it by O(phi) (rotlet sums); the box is chosen with phi < 1 %.
     """
     wall, bodies = launch(args, args.ranks)
-    s = io.load_scene(args.scene)
+    s = io.load_scene(args.scene, args.build)
     f = s["fluid"]
     mu = f["density"] * f["viscosity"]
     a = s["shapes"][0]["diameter"] / 2
@@ -218,7 +220,7 @@ def cmd_spin(args):
     print(f"spin: Omega = {w[axis]:.6g} rad/s (at the end {w_end:.6g}), a = {a:.4g} m, "
           f"phi = {4 * math.pi * a**3 / 3 / box:.4f}, Re = Omega a^2 / nu = "
           f"{abs(w[axis]) * a * a / f['viscosity']:.3g}")
-    return report(case_name(args), args.scene, "torque (N m)",
+    return report(case_name(args), args, "torque (N m)",
                   8 * math.pi * mu * a**3 * w[axis], torque, wall, args.ranks, args.tolerance)
 
 
@@ -253,7 +255,7 @@ def cmd_rotation(args):
         ok = ok and t1 < t0 - args.max_tilt_change
     else:
         ok = ok and abs(t1 - t0) > args.max_tilt_change
-    s = io.load_scene(args.scene)
+    s = io.load_scene(args.scene, args.build)
     append_row(case_name(args), "", s["fluid"]["tau"], "tilt (deg) start -> end",
                f"expect {args.expect}", f"{t0:.1f} -> {t1:.1f}", "", wall, args.ranks)
     print("rotation: " + ("as expected" if ok else "FAILED: not as expected") +
@@ -286,7 +288,7 @@ def cmd_momentum(args):
           f"largest applied impulse {applied:.4e} N s; largest change of fluid + bodies - applied "
           f"{worst:.3e} N s = {error:.2e} of the body momentum; ranks {args.ranks}, wall time "
           f"{wall:.1f} s")
-    s = io.load_scene(args.scene)
+    s = io.load_scene(args.scene, args.build)
     append_row(case_name(args), "", s["fluid"]["tau"], "momentum imbalance / body momentum", 0,
                f"{error:.3g}", f"{error:.3g}", wall, args.ranks)
     if steps < args.min_steps:
@@ -331,6 +333,7 @@ def main():
             q.add_argument("--expect", choices=["keep", "change", "broadside"], default="change")
             q.add_argument("--max-tilt-change", type=float, default=2.0)
     args = p.parse_args()
+    lbdem_scene.use_build(args.build)  # values of scenes come from this build
     return {"terminal": cmd_terminal, "peak": cmd_peak, "invariance": cmd_invariance,
             "rotation": cmd_rotation, "drag": cmd_drag, "spin": cmd_spin,
             "momentum": cmd_momentum}[args.cmd](args)

@@ -22,17 +22,19 @@ import lubrication_reference as ref  # noqa: E402
 import validate_case  # noqa: E402
 import yaml  # noqa: E402
 from lbdem import io, run  # noqa: E402
+from lbdem import scene as lbdem_scene  # noqa: E402
 
 
-def approach_samples(scene, bodies):
+def approach_samples(build, scene, bodies):
     """[(h, lambda_lattice)] from the trace; U, a, wall."""
-    s = io.load_scene(scene)
+    resolved = lbdem_scene.resolve(build, scene)
+    s, lattice = resolved["scene"], resolved["derived"]["fluid"]
     a = 0.5 * s["shapes"][0]["diameter"]
     f = s["fluid"]
     mu = f["density"] * f["viscosity"]
-    dt = (f["tau"] - 0.5) / 3 * f["dx"] ** 2 / f["viscosity"]
+    dt = lattice["dt"]
     wall = len(bodies) == 1
-    u = abs(s["bodies"][0]["velocity"][2])
+    u = abs(resolved["bodies"][0]["velocity"][2])
     out = []
     rows = zip(*[bodies[i] for i in sorted(bodies)])
     for r in rows:
@@ -46,7 +48,7 @@ def approach_samples(scene, bodies):
             h = r[1]["z"] - r[0]["z"] - 2 * a - 2 * u * dt
             force = 0.5 * (r[1]["fz"] - r[0]["fz"])
         out.append((h, force / (6 * math.pi * mu * a * u)))
-    return out, a, wall, f["dx"]
+    return out, a, wall, lattice["dx"]
 
 
 def cmd_approach(args):
@@ -54,7 +56,7 @@ def cmd_approach(args):
     if not args.no_run:
         wall_s, _ = run.run(args.build, args.scene, *map(int, args.ranks.split(":")))
     trace = io.trace_path(args.scene)
-    samples, a, wall, dx = approach_samples(args.scene, io.read_trace_by_body(trace))
+    samples, a, wall, dx = approach_samples(args.build, args.scene, io.read_trace_by_body(trace))
     s = io.load_scene(args.scene)
     lub = s["dem"]["lubrication"]
     h_min = lub["min_gap"]
@@ -113,8 +115,7 @@ def cmd_approach(args):
 
 def scene_without_correction(scene):
     """A copy of the scene with dem.lubrication.enabled false, in runs/lubrication/<name>_off."""
-    with open(scene) as f:
-        s = yaml.safe_load(f)
+    s = io.read_scene_yaml(scene)  # written back as a variant; values come from the JSON
     s["name"] = s["name"] + "_off"
     s["dem"]["lubrication"]["enabled"] = False
     directory = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "runs",
@@ -234,6 +235,7 @@ def main():
     b.add_argument("--without", action="store_true", help="also run without the correction")
     b.add_argument("--no-run", action="store_true", help="analyse the existing traces only")
     args = p.parse_args()
+    lbdem_scene.use_build(args.build)  # values of scenes come from this build
     return {"approach": cmd_approach, "bounce": cmd_bounce}[args.cmd](args)
 
 

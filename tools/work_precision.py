@@ -21,6 +21,7 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 from lbdem import work_precision as wp  # noqa: E402
+from lbdem import scene as lbdem_scene  # noqa: E402
 
 FLUID = ["poiseuille", "couette", "taylor_green"]
 
@@ -62,6 +63,7 @@ def main():
     ap.add_argument("--out", default=os.path.join(HERE, "..", "runs", "work_precision"))
     ap.add_argument("--require-decrease", action="store_true")
     args = ap.parse_args()
+    lbdem_scene.use_build(args.build)  # values of scenes come from this build
 
     os.makedirs(args.out, exist_ok=True)
     table = os.path.join(args.out, "work_precision.csv")

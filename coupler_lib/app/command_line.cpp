@@ -18,6 +18,8 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       c.version = true;
     else if (a == "--check")
       c.check = true;
+    else if (a == "--json")
+      c.json = c.check = true;
     else if (a == "--replay")
       c.replay = value("--replay");
     else if (a == "--log-level")
@@ -41,6 +43,8 @@ std::string usage(const std::string& app, const std::string& what) {
   return "usage: " + app + " [options] scene.yaml\n" + what +
          "\n\noptions:\n"
          "  --check           validate the scene, print the derived parameters, do not run\n"
+         "  --json            with --check: print the resolved scene as JSON on stdout\n"
+         "                    (every key with its default, derived numbers, bodies)\n"
          "  --replay FILE     run this side alone, fed from a recording (HDF5)\n"
          "  --log-level L     trace | debug | info | warn | error (overrides the scene)\n"
          "  --version         print the version\n"

@@ -1,6 +1,6 @@
 #pragma once
 // The command line both binaries share:
-//   APP [--check] [--replay FILE] [--log-level L] scene.yaml
+//   APP [--check [--json]] [--replay FILE] [--log-level L] scene.yaml
 #include <optional>
 #include <string>
 #include <vector>
@@ -10,6 +10,7 @@ namespace lbdem {
 struct CommandLine {
   std::string scene;
   bool check = false;
+  bool json = false;  // --check prints the resolved scene as JSON on stdout (implies check)
   bool help = false;
   bool version = false;
   std::string replay;     // recording to replay this side from

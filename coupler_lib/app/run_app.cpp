@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "coupler_lib/app/scene_json.hpp"
 #include "coupler_lib/scene/scene_checks.hpp"
 
 namespace lbdem {
@@ -140,7 +141,10 @@ int run_app(int argc, char** argv, const AppInfo& info,
     if (ctx.rank == 0 && ctx.cli.version) std::cout << info.program << " " << LBDEM_VERSION << "\n";
     return finish(0);
   }
-  const std::string level = ctx.cli.log_level.empty() ? ctx.scene.log_level : ctx.cli.log_level;
+  // --json keeps stderr to warnings, so a tool reads stdout and shows stderr only on failure.
+  const std::string level = !ctx.cli.log_level.empty() ? ctx.cli.log_level
+                            : ctx.cli.json             ? std::string("warn")
+                                                       : ctx.scene.log_level;
   ctx.log = make_logger(info.side, ctx.rank, level);
 
   int rc = 0;
@@ -148,6 +152,7 @@ int run_app(int argc, char** argv, const AppInfo& info,
     const RunningApp guard(ctx);
     if (ctx.cli.check) {
       check(ctx);
+      if (ctx.cli.json && ctx.rank == 0) std::cout << scene_json(ctx.scene) << std::flush;
     } else {
       rc = run(ctx);
     }

@@ -70,8 +70,10 @@ DemParams parse_dem(Section& s) {
                        "radius of the Rayleigh time for dt_fraction: clump_sphere (the smallest "
                        "clump sphere) or particle (the body's volume-equivalent sphere, the "
                        "paper's rule: larger steps, contacts resolved by fewer of them)");
-  if (auto m = s.optional_section("material", "contact material of bodies and walls"))
-    p.material = parse_material(*m);
+  {
+    auto m = s.section_or_defaults("material", "contact material of bodies and walls");
+    p.material = parse_material(m);
+  }
   if (auto b = s.optional_section("box", "DEM box (default: [0, fluid.domain])")) {
     p.has_box = true;
     p.box_lo = b->require_vec3("lo", "lower corner in m");
@@ -102,18 +104,21 @@ DemParams parse_dem(Section& s) {
   p.neighbor_skin = s.get<double>(
       "neighbor_skin", 0.0, "neighbour-list skin in m (0: half the largest clump-sphere radius)",
       Bounds::non_negative());
-  if (auto o = s.optional_section("output", "DEM-only output (HDF5 + XDMF bodies, CSV energy)")) {
+  {
+    auto o = s.section_or_defaults("output", "DEM-only output (HDF5 + XDMF bodies, CSV energy)");
     p.output.interval =
-        o->get<double>("interval", 0.0, "simulated seconds between body snapshots (0: none)",
-                       Bounds::non_negative());
-    p.output.energy_interval = o->get<double>(
+        o.get<double>("interval", 0.0, "simulated seconds between body snapshots (0: none)",
+                      Bounds::non_negative());
+    p.output.energy_interval = o.get<double>(
         "energy_interval", 0.0, "simulated seconds between energy rows (0: same as interval)",
         Bounds::non_negative());
-    p.output.directory = o->get<std::string>("directory", ".", "output directory");
-    o->finish();
+    p.output.directory = o.get<std::string>("directory", ".", "output directory");
+    o.finish();
   }
-  if (auto l = s.optional_section("lubrication", "sub-grid lubrication correction"))
-    p.lubrication = parse_lubrication(*l);
+  {
+    auto l = s.section_or_defaults("lubrication", "sub-grid lubrication correction");
+    p.lubrication = parse_lubrication(l);
+  }
   s.finish();
   return p;
 }

@@ -122,8 +122,10 @@ FluidOutputParams parse_fluid_output(Section& fluid, const UnitConverter& units,
       o->fail("", "asks for nothing: add 'fields:' and/or 'series:', or remove 'output:'");
     o->finish();
   }
-  if (auto s = fluid.optional_section("stability", "divergence watch (on by default)"))
-    p.stability = parse_stability(*s);
+  {
+    auto s = fluid.section_or_defaults("stability", "divergence watch (on by default)");
+    p.stability = parse_stability(s);
+  }
   if (auto v = fluid.optional_section("validation", "compare with an analytic solution"))
     p.validation = parse_validation(*v);
   return p;

@@ -122,17 +122,18 @@ FluidParams parse_fluid(Section& s) {
                      "or by momentum exchange") == "momentum_exchange"
                 ? LoadMethod::momentum_exchange
                 : LoadMethod::penalization;
-  if (auto b = s.optional_section("boundaries", "per-face boundary conditions")) {
-    for (int f = 0; f < 6; ++f) p.faces[f] = parse_face(*b, f);
+  {
+    auto b = s.section_or_defaults("boundaries", "per-face boundary conditions");
+    for (int f = 0; f < 6; ++f) p.faces[f] = parse_face(b, f);
     for (int a = 0; a < 3; ++a) {
       const bool lo = p.faces[2 * a].type == FaceType::periodic;
       const bool hi = p.faces[2 * a + 1].type == FaceType::periodic;
       if (lo != hi)
-        b->fail(kFaceNames[2 * a + (lo ? 1 : 0)],
-                std::string("periodic faces come in pairs: ") + kFaceNames[2 * a] + " and " +
-                    kFaceNames[2 * a + 1] + " must both be periodic or both not");
+        b.fail(kFaceNames[2 * a + (lo ? 1 : 0)],
+               std::string("periodic faces come in pairs: ") + kFaceNames[2 * a] + " and " +
+                   kFaceNames[2 * a + 1] + " must both be periodic or both not");
     }
-    b->finish();
+    b.finish();
   }
   p.units = UnitConverter::from_tau(p.dx, p.tau, p.viscosity, p.density);
   p.units.char_velocity = p.characteristic_velocity;

@@ -38,8 +38,9 @@ Scene parse_scene(Section root, std::uint64_t hash) {
     sc.dem = parse_dem(*d);
   sc.shapes = parse_shapes(root);
   sc.bodies = parse_bodies(root, sc.shapes);
-  if (auto c = root.optional_section("coupling", "fluid-DEM packet exchange")) {
-    sc.coupling = parse_coupling(*c);
+  {
+    auto c = root.section_or_defaults("coupling", "fluid-DEM packet exchange");
+    sc.coupling = parse_coupling(c);
   }
   root.finish();
   if (!sc.fluid && !sc.dem)

@@ -80,18 +80,16 @@ void check_whole_scene(const Scene& scene, double memory_bytes) {
   check_memory(scene, memory_bytes);
   const std::vector<Shape> shapes = build_scene_shapes(scene);
   check_resolution(scene, shapes);
-  if (!scene.dem) return;
-  // The box as the DEM resolves it (dem_app/dem_setup.cpp): dem.box, else the fluid domain.
-  std::array<double, 3> lo{0, 0, 0}, hi{0, 0, 0};
-  if (scene.dem->has_box) {
-    lo = scene.dem->box_lo;
-    hi = scene.dem->box_hi;
-  } else if (scene.fluid) {
-    hi = scene.fluid->domain;
-  } else {
-    return;  // refused by the DEM's own setup with its message
-  }
-  check_body_placement(scene.file, shapes, scene.bodies, lo, hi, *scene.dem);
+  // Without a box the DEM's own setup refuses the scene with its message.
+  if (const auto box = dem_box(scene))
+    check_body_placement(scene.file, shapes, scene.bodies, box->lo, box->hi, *scene.dem);
+}
+
+std::optional<DemBox> dem_box(const Scene& scene) {
+  if (!scene.dem) return std::nullopt;
+  if (scene.dem->has_box) return DemBox{scene.dem->box_lo, scene.dem->box_hi};
+  if (scene.fluid) return DemBox{{0, 0, 0}, scene.fluid->domain};
+  return std::nullopt;
 }
 
 }  // namespace lbdem

@@ -4,7 +4,9 @@
 // the fluid lattice needs. Both programs run them at start-up on every rank, so fluid_app and
 // dem_app accept and refuse exactly the same scenes with the same message, and a refusal ends
 // the job cleanly before any coupling starts (coupler_lib/app/run_app.hpp).
+#include <array>
 #include <cstdint>
+#include <optional>
 
 #include "coupler_lib/scene/scene.hpp"
 
@@ -21,6 +23,13 @@ double fluid_memory_bytes(const FluidParams& fluid, bool bodies);
 // scene, and a fluid lattice that needs more than `memory_bytes` (the physical memory of the
 // job's nodes; 0: not checked).
 void check_whole_scene(const Scene& scene, double memory_bytes);
+
+// The box the DEM works in (dem_app/dem_setup.cpp resolves it alike): dem.box, else the fluid
+// domain from the origin; empty without a dem section or when neither is given.
+struct DemBox {
+  std::array<double, 3> lo{0, 0, 0}, hi{0, 0, 0};
+};
+std::optional<DemBox> dem_box(const Scene& scene);
 
 // Physical memory of this machine in bytes (sysconf).
 double physical_memory_bytes();

@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <sstream>
 
+#include "coupler_lib/scene/json_text.hpp"
+
 namespace lbdem {
 
 bool Bounds::contains(double v) const {
@@ -120,8 +122,8 @@ void Section::declare(std::string_view key) {
 }
 
 void Section::record(std::string_view key, const std::string& value, bool defaulted,
-                     std::string_view doc) {
-  source_->resolved.push_back({key_path(key), value, defaulted, std::string(doc)});
+                     std::string_view doc, std::string json) {
+  source_->resolved.push_back({key_path(key), value, defaulted, std::string(doc), std::move(json)});
 }
 
 namespace {
@@ -153,6 +155,17 @@ std::string to_text(const T& v) {
     s << v;
     return s.str();
   }
+}
+template <class T>
+std::string to_json(const T& v) {
+  if constexpr (std::is_same_v<T, bool>)
+    return v ? "true" : "false";
+  else if constexpr (std::is_same_v<T, std::string>)
+    return json_string(v);
+  else if constexpr (std::is_integral_v<T>)
+    return std::to_string(v);
+  else
+    return json_number(v);
 }
 }  // namespace
 
@@ -191,11 +204,11 @@ T Section::get(std::string_view key, T fallback, std::string_view doc, Bounds b)
   declare(key);
   const YAML::Node n = child(key);
   if (!n) {
-    record(key, to_text(fallback), true, doc);
+    record(key, to_text(fallback), true, doc, to_json(fallback));
     return fallback;
   }
   T v = convert<T>(key, n, b);
-  record(key, to_text(v), false, doc);
+  record(key, to_text(v), false, doc, to_json(v));
   return v;
 }
 
@@ -205,7 +218,7 @@ T Section::require(std::string_view key, std::string_view doc, Bounds b) {
   const YAML::Node n = child(key);
   if (!n) fail("", "missing required key '" + std::string(key) + "' (" + std::string(doc) + ")");
   T v = convert<T>(key, n, b);
-  record(key, to_text(v), false, doc);
+  record(key, to_text(v), false, doc, to_json(v));
   return v;
 }
 
@@ -237,7 +250,7 @@ std::string Section::choice(std::string_view key, std::string fallback,
   declare(key);
   const YAML::Node n = child(key);
   if (!n) {
-    record(key, fallback, true, doc);
+    record(key, fallback, true, doc, json_string(fallback));
     return fallback;
   }
   auto v = convert<std::string>(key, n, {});
@@ -246,7 +259,7 @@ std::string Section::choice(std::string_view key, std::string fallback,
     fail(key, "expected one of {" + join(options) + "}, got '" + v + "'" +
                   (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
   }
-  record(key, v, false, doc);
+  record(key, v, false, doc, json_string(v));
   return v;
 }
 
@@ -271,7 +284,7 @@ std::vector<double> Section::numbers(std::string_view key, std::string_view doc,
   }
   std::string txt = "[";
   for (size_t i = 0; i < out.size(); ++i) txt += (i ? ", " : "") + to_text(out[i]);
-  record(key, txt + "]", false, doc);
+  record(key, txt + "]", false, doc, json_list(out));
   return out;
 }
 
@@ -282,7 +295,8 @@ std::array<double, 3> Section::require_vec3(std::string_view key, std::string_vi
   if (!n.IsSequence() || n.size() != 3) fail(key, "expected a list of 3 numbers, e.g. [0, 0, 1]");
   std::array<double, 3> v{};
   for (int i = 0; i < 3; ++i) v[i] = convert<double>(key, n[i], b);
-  record(key, "[" + to_text(v[0]) + ", " + to_text(v[1]) + ", " + to_text(v[2]) + "]", false, doc);
+  record(key, "[" + to_text(v[0]) + ", " + to_text(v[1]) + ", " + to_text(v[2]) + "]", false, doc,
+         json_list(v));
   return v;
 }
 
@@ -293,7 +307,7 @@ std::array<double, 3> Section::vec3(std::string_view key, std::array<double, 3> 
     record(key,
            "[" + to_text(fallback[0]) + ", " + to_text(fallback[1]) + ", " + to_text(fallback[2]) +
                "]",
-           true, doc);
+           true, doc, json_list(fallback));
     return fallback;
   }
   return require_vec3(key, doc, b);
@@ -312,6 +326,11 @@ std::optional<Section> Section::optional_section(std::string_view key, std::stri
   if (!n) return std::nullopt;
   if (!n.IsMap()) fail(key, "expected a mapping (" + std::string(doc) + ")");
   return Section(n, source_, key_path(key));
+}
+
+Section Section::section_or_defaults(std::string_view key, std::string_view doc) {
+  if (auto s = optional_section(key, doc)) return *s;
+  return Section(YAML::Node(YAML::NodeType::Map), source_, key_path(key));
 }
 
 std::vector<Section> Section::list(std::string_view key, std::string_view doc) {

@@ -43,12 +43,14 @@ struct Bounds {
   std::string describe() const;
 };
 
-// One resolved key, as `--check` prints it.
+// One resolved key, as `--check` prints it: `value` for people, `json` (the typed value in
+// full precision) for `--check --json`.
 struct ResolvedKey {
   std::string path;
   std::string value;
   bool defaulted = false;
   std::string doc;
+  std::string json;
 };
 
 // State shared by all sections read from one file.
@@ -91,6 +93,9 @@ class Section {
   // Nested mappings and lists of mappings.
   Section section(std::string_view key, std::string_view doc);
   std::optional<Section> optional_section(std::string_view key, std::string_view doc);
+  // The mapping at `key`, or an empty one when the key is absent: for sections whose absence
+  // means "all defaults", so that their keys are read, and recorded, with their defaults.
+  Section section_or_defaults(std::string_view key, std::string_view doc);
   std::vector<Section> list(std::string_view key, std::string_view doc);
 
   // Reject keys that were not declared by any read above (with a did-you-mean).
@@ -106,7 +111,8 @@ class Section {
   YAML::Node child(std::string_view key) const;
   std::string key_path(std::string_view key) const;
   void declare(std::string_view key);
-  void record(std::string_view key, const std::string& value, bool defaulted, std::string_view doc);
+  void record(std::string_view key, const std::string& value, bool defaulted, std::string_view doc,
+              std::string json);
   template <class T>
   T convert(std::string_view key, const YAML::Node& n, Bounds b) const;
 

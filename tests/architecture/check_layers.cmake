@@ -9,7 +9,7 @@ endif()
 
 set(allowed_errors "")
 set(allowed_geometry "coupler_lib/errors.hpp")
-set(allowed_scene "coupler_lib/errors.hpp;coupler_lib/geometry")
+set(allowed_scene "coupler_lib/errors.hpp;coupler_lib/geometry;coupler_lib/output")
 set(allowed_output "coupler_lib/errors.hpp")
 set(allowed_coupling "coupler_lib/errors.hpp;coupler_lib/geometry;coupler_lib/scene;coupler_lib/output")
 set(allowed_app "coupler_lib/errors.hpp;coupler_lib/geometry;coupler_lib/scene;coupler_lib/output;coupler_lib/coupling")

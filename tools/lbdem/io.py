@@ -11,10 +11,19 @@ import csv
 import os
 
 import numpy as np
-import yaml
+
+from . import scene as scene_json
 
 
-def load_scene(path):
+def load_scene(path, build=None):
+    """The scene's resolved keys, defaults filled in, as the programs read them (scene.py)."""
+    return scene_json.load(path, build)
+
+
+def read_scene_yaml(path):
+    """A scene as written, only to write a variant of it (never to read values: YAML 1.1 reads
+    `1e-06` as a string and knows no defaults; values come from load_scene)."""
+    import yaml
     with open(path) as f:
         return yaml.safe_load(f)
 
@@ -132,6 +141,35 @@ def write_bodies_csv(path, position, orientation=None, comment=""):
         f.write(",".join(cols) + "\n")
         for row in table:
             f.write(",".join(repr(float(v)) for v in row) + "\n")
+
+
+def write_bodies_h5(path, position, orientation=None, velocity=None, angular_velocity=None,
+                    density=None, shape=None, comment=""):
+    """A bodies file in HDF5 (docs/study.md, "Bodies from a file"): one float64 dataset per
+    field at the root, one row per body (position N x 3 m, orientation N x 4 w x y z, velocity
+    N x 3 m/s, angular_velocity N x 3 rad/s, density N kg/m^3), shape N variable-length strings;
+    each with a `units` attribute, the comment as the file's `comment` attribute. Fields left
+    None are not written (the scene entry's keys or the defaults apply)."""
+    import h5py
+    fields = [("position", position, "m"), ("orientation", orientation, "1 (w, x, y, z)"),
+              ("velocity", velocity, "m/s"), ("angular_velocity", angular_velocity, "rad/s"),
+              ("density", density, "kg/m^3")]
+    with h5py.File(path, "w") as f:
+        for name, value, units in fields:
+            if value is not None:
+                f[name] = np.asarray(value, dtype=np.float64)
+                f[name].attrs["units"] = units
+        if shape is not None:
+            f.create_dataset("shape", data=[str(s) for s in shape], dtype=h5py.string_dtype())
+        if comment:
+            f.attrs["comment"] = comment
+
+
+def read_bodies_h5_file(path):
+    """(positions (N, 3), orientations (N, 4) or None) of an HDF5 bodies file."""
+    import h5py
+    with h5py.File(path, "r") as f:
+        return f["position"][()], (f["orientation"][()] if "orientation" in f else None)
 
 
 def read_bodies_csv(path):

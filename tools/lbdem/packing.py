@@ -76,8 +76,10 @@ class Packing:
                               for c in range(3)]))
 
     def save(self, path, phi_start):
+        """A bodies file (docs/study.md): HDF5 for a .h5 or .hdf5 path, else CSV."""
         from . import io
-        io.write_bodies_csv(path, self.x, self.q, comment=(
+        write = io.write_bodies_h5 if path.endswith((".h5", ".hdf5")) else io.write_bodies_csv
+        write(path, self.x, self.q, comment=(
             f"packing: {self.n} bodies, periodic box edge {self.box!r} m, solid fraction "
             f"{self.phi():.6g}\nsphere diameter {self.d!r} m, volume-equivalent cube edge "
             f"{self.a!r} m\nrandomised at phi {phi_start} by hard-body Monte Carlo "

@@ -17,6 +17,7 @@ import subprocess
 import time
 
 from . import io, references, run
+from . import scene as lbdem_scene
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SCENES = os.path.normpath(os.path.join(HERE, "..", "..", "configs", "stability"))
@@ -138,9 +139,7 @@ def error_of(name, measure, output, bodies):
         return abs(u - ref) / ref, (f"plateau u {u:.4g} m/s vs Haider-Levenspiel {ref:.4g} m/s "
                                     f"(Re {u * 1.24e-3 / f['viscosity']:.0f})")
     if measure == "rows_per_step":
-        f = s["fluid"]
-        dt = (f["tau"] - 0.5) * f["dx"] ** 2 / (3 * f["viscosity"])
-        steps = round(s["time"]["end"] / dt)
+        steps = lbdem_scene.resolve(None, scene_path(name))["derived"]["schedule"]["steps"]
         return None, f"{len(bodies[0])} trace rows for {steps} steps"
     if measure == "pair":
         d = s["shapes"][0]["diameter"]

@@ -30,13 +30,18 @@ class BodyMesh(unittest.TestCase):
 
     def test_surfaces_follow_the_trace(self):
         with tempfile.TemporaryDirectory() as d:
-            scene = {"name": "s", "fluid": {"domain": [1, 1, 1], "output": {"directory": "."}},
+            # A valid scene: the tools read it through fluid_app --check --json (lbdem/scene.py).
+            scene = {"name": "s", "time": {"end": 0.5},
+                     "fluid": {"domain": [1, 1, 1], "dx": 0.1, "viscosity": 1e-6,
+                               "output": {"directory": ".", "series": {"interval": 1e-3}}},
                      "dem": {"output": {"directory": "."}},
                      "shapes": [{"name": "c", "kind": "cube", "edge": 0.1}],
-                     "bodies": [{"file": "b.csv", "shape": "c", "density": 2}]}
+                     "bodies": [{"file": "b.csv", "shape": "c", "density": 2500}]}
             path = os.path.join(d, "s.yaml")
             with open(path, "w") as f:
                 yaml.safe_dump(scene, f)
+            with open(os.path.join(d, "b.csv"), "w") as f:
+                f.write("x,y,z\n0.2,0.2,0.5\n0.6,0.6,0.5\n")
             h = np.radians(45) / 2  # second cube turned 45 degrees about z
             with open(os.path.join(d, "s_bodies.csv"), "w") as f:
                 f.write(HEADER)

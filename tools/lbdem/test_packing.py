@@ -8,6 +8,7 @@ import unittest
 import numpy as np
 
 from lbdem import analysis, io, packing
+from lbdem import scene as lbdem_scene
 
 
 class Packing(unittest.TestCase):
@@ -52,12 +53,31 @@ class Packing(unittest.TestCase):
 
     def test_written_file_reads_back(self):
         with tempfile.TemporaryDirectory() as d:
-            path = os.path.join(d, "p.csv")
             s = self.p.scaled(0.1)
-            s.save(path, packing.PHI_START)
-            x, q = io.read_bodies_csv(path)
-            np.testing.assert_array_equal(x, s.x)
-            np.testing.assert_array_equal(q, s.q)
+            for name, read in (("p.csv", io.read_bodies_csv), ("p.h5", io.read_bodies_h5_file)):
+                path = os.path.join(d, name)
+                s.save(path, packing.PHI_START)
+                x, q = read(path)
+                np.testing.assert_array_equal(x, s.x)
+                np.testing.assert_array_equal(q, s.q)
+
+    def test_programs_read_the_hdf5_file_as_the_csv_file(self):
+        # Both formats give the programs the same bodies (fluid_app --check --json).
+        s = self.p.scaled(0.1)
+        bodies = {}
+        with tempfile.TemporaryDirectory() as d:
+            for name in ("p.csv", "p.h5"):
+                s.save(os.path.join(d, name), packing.PHI_START)
+                path = os.path.join(d, name + ".yaml")
+                with open(path, "w") as f:
+                    f.write(f"name: p\ntime: {{end: 0.01}}\n"
+                            f"dem: {{periodic: xyz, box: {{lo: [0, 0, 0], hi: [{s.box!r}, "
+                            f"{s.box!r}, {s.box!r}]}}}}\n"
+                            f"shapes:\n- {{name: ball, kind: sphere, diameter: {s.d!r}}}\n"
+                            f"bodies:\n- {{file: {name}, shape: ball, density: 2500}}\n")
+                bodies[name] = lbdem_scene.resolve(None, path)["bodies"]
+        self.assertEqual(len(bodies["p.h5"]), s.n)
+        self.assertEqual(bodies["p.h5"], bodies["p.csv"])
 
 
 if __name__ == "__main__":

@@ -16,7 +16,10 @@ HEADER = "time,id,x,y,z,vx,vy,vz,wx,wy,wz,qw,qx,qy,qz,fx,fy,fz,tx,ty,tz\n"
 
 
 def write_run(folder, name, n, box, vz_of_t, shape, series=None):
-    scene = {"name": name, "fluid": {"domain": [box] * 3, "output": {"directory": "."}},
+    # A valid scene: the tools read it through fluid_app --check --json (lbdem/scene.py).
+    scene = {"name": name, "time": {"end": 0.1},
+             "fluid": {"domain": [box] * 3, "dx": box / 10, "viscosity": 1e-6,
+                       "output": {"directory": ".", "series": {"interval": 1e-3}}},
              "dem": {"output": {"directory": "."}}, "shapes": [shape]}
     with open(os.path.join(folder, name + ".yaml"), "w") as f:
         yaml.safe_dump(scene, f)

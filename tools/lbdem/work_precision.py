@@ -17,6 +17,7 @@ import os
 import yaml
 
 from . import io, references, run
+from . import scene as lbdem_scene
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
@@ -51,10 +52,12 @@ def rung_scene(base_path, n, tau, out_dir, end=None):
     """The base scene at n cells across the body, tau given; outputs go to out_dir. Axes that are
     not whole cells at the new dx are rounded to the nearest whole number of cells (the change
     is returned as the largest relative change of a box edge)."""
-    scene = copy.deepcopy(io.load_scene(base_path))
+    values = io.load_scene(base_path)
+    scene = copy.deepcopy(io.read_scene_yaml(base_path))
     f = scene["fluid"]
-    dx = body_size(scene) / n
-    old = [float(v) for v in f["domain"]]
+    dx = body_size(values) / n
+    old = [float(v) for v in values["fluid"]["domain"]]
+    f.pop("resolution", None)  # replaced by dx
     f["domain"] = [max(1, round(v / dx)) * dx for v in old]
     f["dx"] = dx
     f["tau"] = tau
@@ -66,17 +69,6 @@ def rung_scene(base_path, n, tau, out_dir, end=None):
         f["output"]["directory"] = out_dir
     change = max(abs(a - b) / b for a, b in zip(f["domain"], old))
     return scene, change
-
-
-def steps_of(scene):
-    f = scene["fluid"]
-    dt = (f["tau"] - 0.5) * f["dx"] ** 2 / (3 * f["viscosity"])
-    return int(math.ceil(scene["time"]["end"] / dt - 1e-9)), dt
-
-
-def cells_of(scene):
-    f = scene["fluid"]
-    return math.prod(int(round(v / f["dx"])) for v in f["domain"])
 
 
 def tail(rows, key, window=WINDOW):
@@ -124,10 +116,12 @@ def run_rung(build, case, n, tau, work, ranks=(1, 1), end=None, timeout=3600):
         yaml.safe_dump(scene, out, sort_keys=False)
     wall, _ = run.run(build, path, ranks[0], ranks[1], timeout=timeout,
                       log=os.path.join(folder, scene["name"] + ".log"))
-    result, ref = measure(kind, path, scene)
+    # Values as the programs read the scene written above (lbdem/scene.py).
+    resolved = lbdem_scene.resolve(build, path)
+    result, ref = measure(kind, path, resolved["scene"])
     ref = reference if ref is None else ref
-    steps, _ = steps_of(scene)
-    cells = cells_of(scene)
+    steps = resolved["derived"]["schedule"]["steps"]
+    cells = int(resolved["derived"]["fluid"]["cell_count"])
     return {"case": case, "n": n, "tau": tau, "cells": cells, "steps": steps,
             "cell_updates": cells * steps, "ranks": f"{ranks[0]}:{ranks[1]}",
             "result": result, "reference": ref, "error": abs(result - ref) / abs(ref),
