@@ -35,11 +35,14 @@ class RunWatch {
  public:
   // Collective. Registers itself with `run` (must outlive it) and, for a validation case that
   // starts from its analytic solution, sets the initial state.
-  RunWatch(AppContext& ctx, FluidRun<T>& run);
+  // `series_resume_bytes` >= 0: a restart continues the series from that length.
+  RunWatch(AppContext& ctx, FluidRun<T>& run, long long series_resume_bytes = -1);
   RunWatch(const RunWatch&) = delete;
   RunWatch& operator=(const RunWatch&) = delete;
 
   bool stopped() const { return failure_.has_value(); }
+  // Bytes of the CSV series on disk (rank 0; -1 without), for checkpoints.
+  long long series_bytes() { return output_ ? output_->series_bytes() : -1; }
   // Collective, after the loop: the validation report; the exit code.
   int finish();
 
