@@ -193,6 +193,21 @@ void prune_checkpoints(const Scene& scene, const std::string& side, int keep) {
   }
 }
 
+namespace {
+std::string& remembered() {
+  static std::string prefix;
+  return prefix;
+}
+}  // namespace
+
+void remember_checkpoint(const std::string& prefix) {
+  remembered() = prefix;
+}
+
+const std::string& remembered_checkpoint() {
+  return remembered();
+}
+
 std::string restart_command(const Scene& scene, const std::string& prefix, int fluid_ranks,
                             int dem_ranks) {
   std::ostringstream s;

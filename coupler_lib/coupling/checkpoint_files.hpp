@@ -71,6 +71,11 @@ void check_restart(const std::string& arg, const Scene& scene, const std::string
 // (called by one rank after a checkpoint is complete).
 void prune_checkpoints(const Scene& scene, const std::string& side, int keep);
 
+// The newest checkpoint this process completed or restarted from, for messages such as the
+// stall watchdog's (empty: none).
+void remember_checkpoint(const std::string& prefix);
+const std::string& remembered_checkpoint();
+
 // The command that continues the run from `prefix`, for the end-of-run message.
 std::string restart_command(const Scene& scene, const std::string& prefix, int fluid_ranks,
                             int dem_ranks);

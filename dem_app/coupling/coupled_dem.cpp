@@ -100,6 +100,7 @@ int run_coupled_dem(AppContext& ctx) {
     }
     first = r.header.step;
     trace_bytes = r.trace_bytes;
+    remember_checkpoint(prefix);
     SideInfo journal_ctx = ctx;  // the journal is identified by the scene fingerprint
     journal_ctx.scene_hash = scene_fingerprint(scene);
     history = std::make_unique<DemCoupler>(journal_ctx, r.path);
@@ -166,6 +167,7 @@ int run_coupled_dem(AppContext& ctx) {
                          trace ? trace->flushed_bytes() : -1, ctx.side_comm);
     // Older checkpoints go only once both halves of this one exist.
     any_rank_of_both(false, world.wait());
+    remember_checkpoint(checkpoint);
     if (ctx.rank == 0) prune_checkpoints(scene, "dem", scene.coupling.checkpoint_keep);
     if (stopped) {
       if (ctx.rank == 0)
@@ -187,6 +189,14 @@ int run_coupled_dem(AppContext& ctx) {
     if (replay)
       ctx.log->info("replay of {}: the states of all {} steps match the recording bit for bit",
                     ctx.cli.replay, schedule.steps);
+  }
+  // The journal served the checkpoints (each holds its own copy up to its step).
+  coupler.reset();
+  if (ctx.rank == 0 && !journal.empty()) {
+    std::error_code ec;
+    std::filesystem::remove(journal, ec);
+    if (std::filesystem::is_empty(checkpoint_directory(scene), ec))
+      std::filesystem::remove(checkpoint_directory(scene), ec);
   }
   return 0;
 }

@@ -103,6 +103,7 @@ int run_typed(AppContext& ctx) {
   if (!ctx.cli.restart.empty()) {
     try {
       const std::string prefix = restart_prefix(ctx.cli.restart);
+      remember_checkpoint(prefix);
       restart = read_fluid_checkpoint(
           prefix, make_checkpoint_header(scene, "fluid", 0, 0, ctx.size, dem_ranks), solver,
           restored);
@@ -214,6 +215,7 @@ int run_typed(AppContext& ctx) {
         solver, covered, lengths);
     // Older checkpoints go only once both halves of this one exist.
     any_rank_of_both(false, world.wait());
+    remember_checkpoint(checkpoint);
     if (ctx.rank == 0) prune_checkpoints(scene, "fluid", scene.coupling.checkpoint_keep);
     if (stopped) break;
   }
