@@ -25,12 +25,16 @@ int stop_signal() {
   return static_cast<int>(g_signal);
 }
 
-bool any_rank_of_both(bool flag, WaitMode mode, const std::function<void()>& between_tests) {
-  int mine = flag ? 1 : 0, any = 0;
+int agree_flags(int mine, WaitMode mode, const std::function<void()>& between_tests) {
+  int all = 0;
   MPI_Request req = MPI_REQUEST_NULL;
-  MPI_Iallreduce(&mine, &any, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD, &req);
+  MPI_Iallreduce(&mine, &all, 1, MPI_INT, MPI_BOR, MPI_COMM_WORLD, &req);
   wait_request(req, mode, between_tests);
-  return any != 0;
+  return all;
+}
+
+bool any_rank_of_both(bool flag, WaitMode mode, const std::function<void()>& between_tests) {
+  return agree_flags(flag ? 1 : 0, mode, between_tests) != 0;
 }
 
 }  // namespace lbdem

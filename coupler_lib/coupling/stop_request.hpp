@@ -14,6 +14,15 @@ void install_stop_handlers();
 // The signal received so far (0: none).
 int stop_signal();
 
+// What each program reports at every exchange step, as bits combined over both programs.
+enum ExchangeFlag : int {
+  kStopRequested = 1,   // a stop signal arrived: checkpoint and end with status 0
+  kFluidUnstable = 2,   // the fluid's stability watch failed: end with kExitUnstable
+  kBodiesUnstable = 4,  // the DEM's body watch failed: end with kExitUnstable
+};
+// Collective over MPI_COMM_WORLD: the bitwise or of `mine` over every rank of both programs.
+int agree_flags(int mine, WaitMode mode, const std::function<void()>& between_tests = {});
+
 // Collective over MPI_COMM_WORLD (both programs): true when `mine` is true on any rank of
 // either program. Waits like the exchanges do.
 bool any_rank_of_both(bool mine, WaitMode mode, const std::function<void()>& between_tests = {});

@@ -16,9 +16,15 @@ bool may_change_at_restart(const std::string& key_path) {
                                                              "coupling.stall_timeout"};
   for (const auto k : kExact)
     if (key_path == k) return true;
-  static constexpr std::array<std::string_view, 5> kPrefixes = {
-      "fluid.output", "dem.output", "coupling.output_interval", "coupling.wait",
-      "coupling.handshake_timeout"};
+  // The stability watches' limits too: a run stopped by a watch may continue with a limit the
+  // user judged too strict.
+  static constexpr std::array<std::string_view, 7> kPrefixes = {"fluid.output",
+                                                                "dem.output",
+                                                                "coupling.output_interval",
+                                                                "coupling.wait",
+                                                                "coupling.handshake_timeout",
+                                                                "fluid.stability",
+                                                                "dem.max_overlap"};
   for (const auto p : kPrefixes)
     if (key_path.rfind(p, 0) == 0) return true;
   return false;

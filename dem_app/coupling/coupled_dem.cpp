@@ -13,6 +13,7 @@
 #include "coupler_lib/scene/shape_catalogue.hpp"
 #include "dem_app/body_output.hpp"
 #include "dem_app/coupling/body_trace.hpp"
+#include "dem_app/coupling/body_watch.hpp"
 #include "dem_app/coupling/dem_checkpoint.hpp"
 #include "dem_app/dem_run.hpp"
 #include "dem_app/dem_setup.hpp"
@@ -148,6 +149,8 @@ int run_coupled_dem(AppContext& ctx) {
   coupler->send_states(first, owned);
   std::string checkpoint;  // the last one written
   bool stopped = false;
+  int unstable = 0;  // kFluidUnstable | kBodiesUnstable as both programs agreed
+  const BodyWatchLimits limits = body_watch_limits(scene);
   for (std::int64_t step = first + 1; step <= schedule.steps; ++step) {
     const std::vector<BodyLoad> loads = coupler->receive_loads(step);
     advance(step, loads);
@@ -159,7 +162,30 @@ int run_coupled_dem(AppContext& ctx) {
     coupler->send_states(step, owned);
     progress.update(step, time);
     if (!checkpoints) continue;
-    stopped = agree_on_stop(world.wait());
+    const std::string trouble = check_bodies(owned, step, time, setup, limits, ctx.side_comm);
+    const int flags = agree_flags(
+        (stop_signal() != 0 ? kStopRequested : 0) | (trouble.empty() ? 0 : kBodiesUnstable),
+        world.wait());
+    unstable = flags & (kFluidUnstable | kBodiesUnstable);
+    if (unstable) {
+      // Both programs stop here; the one that found the problem prints the diagnosis.
+      if (ctx.rank == 0) {
+        if (!trouble.empty())
+          ctx.log->error("{}", trouble);
+        else
+          ctx.log->error(
+              "stopped at step {}: fluid_app found the fluid unstable (its diagnosis "
+              "above)",
+              step);
+        const std::string& last = remembered_checkpoint();
+        ctx.log->error("last good checkpoint: {}",
+                       last.empty() ? std::string("none (set coupling.checkpoint_interval)")
+                                    : last + "; continue after changing the scene with: " +
+                                          restart_command(scene, last, fluid_ranks, ctx.size));
+      }
+      break;
+    }
+    stopped = (flags & kStopRequested) != 0;
     if (!stopped && !schedule.checkpoint_at(step)) continue;
     checkpoint = checkpoint_prefix(scene, step);
     write_dem_checkpoint(checkpoint, coupler->flush_journal(),
@@ -178,7 +204,8 @@ int run_coupled_dem(AppContext& ctx) {
     }
   }
   if (ctx.rank == 0) {
-    if (!stopped) ctx.log->info("coupled DEM run finished after {} fluid steps", schedule.steps);
+    if (!stopped && !unstable)
+      ctx.log->info("coupled DEM run finished after {} fluid steps", schedule.steps);
     const CouplingTimes c = coupler->times();
     const double n = double(std::max<std::int64_t>(schedule.steps, 1));
     ctx.log->info(
@@ -198,7 +225,7 @@ int run_coupled_dem(AppContext& ctx) {
     if (std::filesystem::is_empty(checkpoint_directory(scene), ec))
       std::filesystem::remove(checkpoint_directory(scene), ec);
   }
-  return 0;
+  return unstable ? kExitUnstable : 0;
 }
 
 }  // namespace lbdem

@@ -65,8 +65,10 @@ void restore_covered(hlbm::BodyField<T>& bodies, const std::vector<CoveredRecord
     const bool take = same_layout ? r.rank == rank : lowest[static_cast<std::size_t>(r.id)] == rank;
     if (!take) continue;
     const auto it = mine.find(r.id);
+    const bool zero =
+        r.covered == std::array<double, 3>{} && r.covered_moment == std::array<double, 3>{};
     if (it == mine.end()) {
-      if (same_layout)
+      if (same_layout && !zero)
         throw SideError("restart: body " + std::to_string(r.id) +
                         " covered fluid on this rank at the checkpoint but is not here now");
       continue;
@@ -174,9 +176,12 @@ int run_typed(AppContext& ctx) {
                     solver.comm());
   else
     run.start();
+  // Every checkpoint holds a state that passed the stability check.
+  if (checkpoints) watch.check_also_at([&](long step) { return schedule.checkpoint_at(step); });
   std::string checkpoint;  // the last one written
   bool stopped = false;
-  while (!run.done() && !watch.stopped()) {
+  int unstable = 0;  // kFluidUnstable | kBodiesUnstable as both programs agreed
+  while (!run.done()) {
     auto t = Clock::now();
     run.step();
     lattice_s += seconds_since(t);
@@ -188,18 +193,28 @@ int run_typed(AppContext& ctx) {
                                  [&](int i, CellIndex c) { return solver.population(i, c); }, step);
     bodies_s += seconds_since(t);
     feed.send(step, loads);
-    if (watch.stopped()) break;
+    if (watch.stopped() && !checkpoints) break;
     // The audit needs the states of this very step (a brief stop of the overlap).
     const bool audit_now = audit && schedule.output_at(step);
     const auto& states = feed.next(step, audit_now);
     if (audit_now) audit->write(step, double(step) * scene.fluid->units.dt, solver, states);
+    // Both programs agree on stop requests and instabilities before the fluid embeds states
+    // that may be non-finite.
+    int flags = 0;
+    if (checkpoints) {
+      flags = agree_flags(
+          (stop_signal() != 0 ? kStopRequested : 0) | (watch.stopped() ? kFluidUnstable : 0),
+          world.wait());
+      unstable = flags & (kFluidUnstable | kBodiesUnstable);
+      if (unstable) break;
+    }
     if (feed.fresh()) {
       t = Clock::now();
       bodies.update(states);
       bodies_s += seconds_since(t);
     }
     if (!checkpoints) continue;
-    stopped = agree_on_stop(world.wait());
+    stopped = (flags & kStopRequested) != 0;
     if (!stopped && !schedule.checkpoint_at(step)) continue;
     checkpoint = checkpoint_prefix(scene, step);
     std::vector<CoveredRecord> covered;
@@ -219,7 +234,7 @@ int run_typed(AppContext& ctx) {
     if (ctx.rank == 0) prune_checkpoints(scene, "fluid", scene.coupling.checkpoint_keep);
     if (stopped) break;
   }
-  if (!watch.stopped()) feed.finish(solver.steps());
+  if (!watch.stopped() && !unstable) feed.finish(solver.steps());
   if (const std::int64_t n = solver.steps(); n > 0) {
     const CouplingTimes c = coupler->times();
     ctx.log->info(
@@ -229,6 +244,22 @@ int run_typed(AppContext& ctx) {
         c.idle_s / double(n));
   }
   const int rc = watch.finish();
+  if (unstable) {
+    // Both programs stop here; the one that found the problem printed the diagnosis.
+    if (ctx.rank == 0) {
+      if (!(unstable & kFluidUnstable))
+        ctx.log->error(
+            "stopped at step {}: dem_app found the bodies unstable (its diagnosis "
+            "above)",
+            solver.steps());
+      const std::string& last = remembered_checkpoint();
+      ctx.log->error("last good checkpoint: {}",
+                     last.empty() ? std::string("none (set coupling.checkpoint_interval)")
+                                  : last + "; continue after changing the scene with: " +
+                                        restart_command(scene, last, ctx.size, dem_ranks));
+    }
+    return kExitUnstable;
+  }
   if (watch.stopped()) {
     // The DEM side is waiting for loads that will never come: end the whole job. The
     // diagnosis and the last good state were written by the stability watch.

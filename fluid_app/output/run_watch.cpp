@@ -77,7 +77,7 @@ template <class T>
 void RunWatch<T>::observe(const FluidSolver<T>& solver, const StepInfo& info) {
   if (failure_) return;
   const long step = static_cast<long>(info.step);
-  const bool check = stability_ && stability_->due(step);
+  const bool check = stability_ && (stability_->due(step) || (extra_ && extra_(step)));
   const bool write = output_ && output_->due(step);
   if (!check && !write) return;
   fill_macro_fields(solver, fields_);

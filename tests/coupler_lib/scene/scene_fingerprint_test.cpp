@@ -21,9 +21,10 @@ Scene parse(const std::string& text) {
 }
 
 TEST(SceneFingerprint, KeysARestartMayChange) {
-  for (const char* k : {"time.end", "log_level", "coupling.checkpoint_interval",
-                        "coupling.checkpoint_keep", "fluid.output.directory", "dem.output.interval",
-                        "coupling.output_interval", "coupling.stall_timeout"})
+  for (const char* k :
+       {"time.end", "log_level", "coupling.checkpoint_interval", "coupling.checkpoint_keep",
+        "fluid.output.directory", "dem.output.interval", "coupling.output_interval",
+        "coupling.stall_timeout", "fluid.stability.max_mach", "dem.max_overlap"})
     EXPECT_TRUE(may_change_at_restart(k)) << k;
   for (const char* k : {"fluid.viscosity", "fluid.dx", "coupling.margin", "coupling.overlap",
                         "dem.gravity", "bodies.0.position"})
