@@ -169,8 +169,8 @@ int run_coupled_dem(AppContext& ctx) {
     if (!checkpoints) continue;
     const std::string trouble = check_bodies(owned, step, time, setup, limits, ctx.side_comm);
     const int flags = agree_flags(
-        (stop_signal() != 0 ? kStopRequested : 0) | (trouble.empty() ? 0 : kBodiesUnstable),
-        world.wait());
+        (stop_signal() != 0 ? kStopRequested : 0) | (trouble.empty() ? 0 : kBodiesUnstable), world,
+        step);
     unstable = flags & (kFluidUnstable | kBodiesUnstable);
     if (unstable) {
       // Both programs stop here; the one that found the problem prints the diagnosis.
@@ -197,7 +197,7 @@ int run_coupled_dem(AppContext& ctx) {
                          make_checkpoint_header(scene, "dem", step, time, fluid_ranks, ctx.size),
                          trace ? trace->flushed_bytes() : -1, ctx.side_comm);
     // Older checkpoints go only once both halves of this one exist.
-    any_rank_of_both(false, world.wait());
+    wait_for_both(world, step);
     remember_checkpoint(checkpoint);
     if (ctx.rank == 0) prune_checkpoints(scene, "dem", scene.coupling.checkpoint_keep);
     if (stopped) {

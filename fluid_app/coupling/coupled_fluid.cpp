@@ -203,8 +203,8 @@ int run_typed(AppContext& ctx) {
     int flags = 0;
     if (checkpoints) {
       flags = agree_flags(
-          (stop_signal() != 0 ? kStopRequested : 0) | (watch.stopped() ? kFluidUnstable : 0),
-          world.wait());
+          (stop_signal() != 0 ? kStopRequested : 0) | (watch.stopped() ? kFluidUnstable : 0), world,
+          step);
       unstable = flags & (kFluidUnstable | kBodiesUnstable);
       if (unstable) break;
     }
@@ -229,7 +229,7 @@ int run_typed(AppContext& ctx) {
                                dem_ranks),
         solver, covered, lengths);
     // Older checkpoints go only once both halves of this one exist.
-    any_rank_of_both(false, world.wait());
+    wait_for_both(world, step);
     remember_checkpoint(checkpoint);
     if (ctx.rank == 0) prune_checkpoints(scene, "fluid", scene.coupling.checkpoint_keep);
     if (stopped) break;
