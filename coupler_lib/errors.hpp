@@ -6,6 +6,9 @@
 
 namespace lbdem {
 
+// Exit status of either program when a stability watch stopped the run (1 is any error).
+inline constexpr int kExitUnstable = 3;
+
 // Bad shape input (STL files, clump files, shape parameters).
 class ShapeError : public std::runtime_error {
  public:

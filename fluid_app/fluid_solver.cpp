@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <limits>
 #include <new>
+#include <stdexcept>
 
 #include "fluid_app/boundary/boundary_links.hpp"
 #include "fluid_app/kernel/aa_kernel.hpp"
@@ -418,6 +419,46 @@ std::array<double, 3> FluidSolver<T>::momentum() const {
   std::array<double, 3> global{};
   MPI_Allreduce(local.data(), global.data(), 3, MPI_DOUBLE, MPI_SUM, impl_->dec.comm());
   return global;
+}
+
+template <class T>
+void FluidSolver<T>::interior_populations(std::vector<T>& out) const {
+  const LocalBox& b = impl_->box;
+  out.resize(std::size_t(d3q19::Q) * std::size_t(b.interior_cells()));
+  std::size_t k = 0;
+  for (int i = 0; i < d3q19::Q; ++i)
+    for (int z = 1; z <= b.n[2]; ++z)
+      for (int y = 1; y <= b.n[1]; ++y)
+        for (int x = 1; x <= b.n[0]; ++x) out[k++] = impl_->population(i, b.index(x, y, z));
+}
+
+template <class T>
+void FluidSolver<T>::set_interior_populations(const std::vector<T>& in) {
+  const LocalBox& b = impl_->box;
+  if (in.size() != std::size_t(d3q19::Q) * std::size_t(b.interior_cells()))
+    throw std::invalid_argument("set_interior_populations: wrong number of values");
+  // The next step reads, for each interior cell, exactly its 19 post-stream populations
+  // (in the cell itself after an even count of steps, at its neighbours' slots after an odd
+  // one: population_ref hides which), so writing these restores everything it reads.
+  std::size_t k = 0;
+  for (int i = 0; i < d3q19::Q; ++i)
+    for (int z = 1; z <= b.n[2]; ++z)
+      for (int y = 1; y <= b.n[1]; ++y)
+        for (int x = 1; x <= b.n[0]; ++x) impl_->population_ref(i, b.index(x, y, z)) = in[k++];
+}
+
+template <class T>
+SolverMemory FluidSolver<T>::memory() const {
+  return {impl_->steps, impl_->force, impl_->integral, impl_->impulse, impl_->mean};
+}
+
+template <class T>
+void FluidSolver<T>::restore(const SolverMemory& m) {
+  impl_->steps = m.steps;
+  impl_->force = m.force;
+  impl_->integral = m.integral;
+  impl_->impulse = m.impulse;
+  impl_->mean = m.mean;
 }
 
 template <class T>

@@ -32,6 +32,16 @@ struct MeanFlow {
   double mass = 0;                   // sum(d rho), lattice units
 };
 
+// What the solver carries from one step to the next besides the populations and the porous
+// field (which the HLBM rebuilds from the body states): what a checkpoint stores.
+struct SolverMemory {
+  std::int64_t steps = 0;
+  std::array<double, 3> force{};     // uniform force of the next step (controller output)
+  std::array<double, 3> integral{};  // controller's integral of the error
+  std::array<double, 3> impulse{};   // applied_impulse()
+  MeanFlow mean;                     // mean_flow()
+};
+
 template <class T>
 class FluidSolverImpl;
 
@@ -66,6 +76,16 @@ class FluidSolver {
   void macroscopic(std::vector<T>& rho, std::vector<T>& u) const;
   // Overwrite one interior cell with the equilibrium at (rho, u) (initial conditions).
   void set_equilibrium(CellIndex cell, T rho, std::array<T, 3> u);
+
+  // --- Checkpoints. ---
+  // The post-stream populations of this rank's interior cells, population-major, then cells
+  // x fastest (the rank's block of the global array [19][nz][ny][nx]), whatever the AA parity.
+  void interior_populations(std::vector<T>& out) const;
+  // The reverse, after restore(memory) has set the step count (and with it the AA parity):
+  // every location the next step reads is written, so the run continues bit for bit.
+  void set_interior_populations(const std::vector<T>& in);
+  SolverMemory memory() const;
+  void restore(const SolverMemory& m);
 
   // --- Forcing. ---
   // Uniform body force density F (lattice units; momentum added per cell and step is F).

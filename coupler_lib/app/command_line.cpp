@@ -22,6 +22,8 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       c.json = c.check = true;
     else if (a == "--replay")
       c.replay = value("--replay");
+    else if (a == "--restart")
+      c.restart = value("--restart");
     else if (a == "--log-level")
       c.log_level = value("--log-level");
     else if (!a.empty() && a[0] == '-')
@@ -33,6 +35,8 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
                                   "')");
   }
   if (!c.help && !c.version && c.scene.empty()) throw std::invalid_argument("no scene file given");
+  if (!c.replay.empty() && !c.restart.empty())
+    throw std::invalid_argument("--replay and --restart cannot be combined");
   if (!c.log_level.empty() && c.log_level != "trace" && c.log_level != "debug" &&
       c.log_level != "info" && c.log_level != "warn" && c.log_level != "error")
     throw std::invalid_argument("--log-level expects trace, debug, info, warn or error");
@@ -46,6 +50,8 @@ std::string usage(const std::string& app, const std::string& what) {
          "  --json            with --check: print the resolved scene as JSON on stdout\n"
          "                    (every key with its default, derived numbers, bodies)\n"
          "  --replay FILE     run this side alone, fed from a recording (HDF5)\n"
+         "  --restart CKPT    continue a coupled run from a checkpoint (a .fluid.h5 or .dem.h5\n"
+         "                    file, their common prefix, or the checkpoint folder: the newest)\n"
          "  --log-level L     trace | debug | info | warn | error (overrides the scene)\n"
          "  --version         print the version\n"
          "  --help            this text\n"

@@ -1,6 +1,6 @@
 #pragma once
 // The command line both binaries share:
-//   APP [--check [--json]] [--replay FILE] [--log-level L] scene.yaml
+//   APP [--check [--json]] [--replay FILE] [--restart CHECKPOINT] [--log-level L] scene.yaml
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +14,7 @@ struct CommandLine {
   bool help = false;
   bool version = false;
   std::string replay;     // recording to replay this side from
+  std::string restart;    // checkpoint (either half, its prefix or its folder) to continue from
   std::string log_level;  // overrides the scene's log_level
 };
 

@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "coupler_lib/app/scene_json.hpp"
+#include "coupler_lib/coupling/checkpoint_files.hpp"
 #include "coupler_lib/scene/scene_checks.hpp"
 
 namespace lbdem {
@@ -84,6 +85,7 @@ StartOutcome start_up(AppContext& ctx, int argc, char** argv, double memory_byte
     ctx.scene_hash = ctx.scene.hash;
     ctx.coupling = ctx.scene.coupling;
     check_whole_scene(ctx.scene, memory_bytes);
+    if (!ctx.cli.restart.empty()) check_restart(ctx.cli.restart, ctx.scene, ctx.side, ctx.size);
   } catch (const std::exception& e) {
     return {Start::fail, e.what(), false};
   }

@@ -8,19 +8,26 @@
 #include "coupler_lib/coupling/reduce.hpp"
 #include "coupler_lib/coupling/replay_transport.hpp"
 #include "coupler_lib/errors.hpp"
+#include "coupler_lib/scene/scene_fingerprint.hpp"
 
 namespace lbdem {
 
-DemCoupler::DemCoupler(const World& world, const Scene& scene)
+DemCoupler::DemCoupler(const World& world, const Scene& scene, const std::string& journal)
     : DemCoupler(world.side(), std::make_unique<LiveDemTransport>(world)) {
-  if (!scene.coupling.record.empty()) {
-    RecordingInfo info;
-    info.scene_hash = scene.hash;
-    info.scene_file = scene.file;
-    info.fluid_ranks = world.peer().size;
-    info.dem_ranks = world.size();
-    info.layout = layout_;
+  RecordingInfo info;
+  info.scene_hash = scene.hash;
+  info.scene_file = scene.file;
+  info.fluid_ranks = world.peer().size;
+  info.dem_ranks = world.size();
+  info.layout = layout_;
+  if (!scene.coupling.record.empty())
     recorder_ = std::make_unique<Recorder>(side_, scene.coupling.record, info);
+  if (!journal.empty()) {
+    // The journal outlives edits of time.end and outputs: it is identified by the scene
+    // fingerprint, which a restart checks, instead of the bytes of the file.
+    info.scene_hash = scene_fingerprint(scene);
+    journal_ = std::make_unique<Recorder>(side_, journal, info);
+    journal_path_ = journal;
   }
 }
 
@@ -60,6 +67,7 @@ void DemCoupler::send_states(std::int64_t step, std::span<const BodyState> owned
   }
   transport_->send_states(step, sent_, buckets);
   if (recorder_) recorder_->states(step, sent_);
+  if (journal_) journal_->states(step, sent_);
   step_ = step;
   answered_ = false;
 }
@@ -74,7 +82,28 @@ std::vector<BodyLoad> DemCoupler::receive_loads(std::int64_t step) {
   answered_ = true;
   std::vector<BodyLoad> loads = reduce_loads(sent_, transport_->receive_loads(step), step);
   if (recorder_) recorder_->loads(step, loads);
+  if (journal_) journal_->loads(step, loads);
   return loads;
+}
+
+void DemCoupler::journal_states(std::int64_t step, std::span<const BodyState> owned) {
+  if (!journal_) return;
+  std::vector<BodyState> s(owned.begin(), owned.end());
+  for (BodyState& b : s) {
+    b.version = kProtocolVersion;
+    b.step = step;
+  }
+  journal_->states(step, s);
+}
+
+void DemCoupler::journal_loads(std::int64_t step, std::span<const BodyLoad> loads) {
+  if (journal_) journal_->loads(step, loads);
+}
+
+std::string DemCoupler::flush_journal() {
+  if (!journal_) return {};
+  journal_->flush();
+  return journal_path_;
 }
 
 CouplingTimes DemCoupler::times() const {

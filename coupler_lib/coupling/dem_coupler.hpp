@@ -32,7 +32,9 @@ namespace lbdem {
 class DemCoupler {
  public:
   // Live. Collective over both programs (the fluid side constructs its FluidCoupler).
-  DemCoupler(const World& world, const Scene& scene);
+  // `journal`: a recording of every exchange kept for checkpoints (the DEM half of a
+  // checkpoint is this journal up to its step, docs/reliability.md); empty: none.
+  DemCoupler(const World& world, const Scene& scene, const std::string& journal = {});
   // Replay from a recording. Collective over the DEM ranks.
   DemCoupler(const SideInfo& ctx, const std::string& recording);
   ~DemCoupler();
@@ -42,6 +44,13 @@ class DemCoupler {
   // One load per body of the last send_states, in the same order. `step` is the label the
   // fluid side gave its loads (checked on every packet).
   std::vector<BodyLoad> receive_loads(std::int64_t step);
+
+  // Journal entries for exchanges that did not go through this coupler (a restart replays
+  // its checkpoint's steps before the live exchanges resume). Collective over the DEM ranks.
+  void journal_states(std::int64_t step, std::span<const BodyState> owned);
+  void journal_loads(std::int64_t step, std::span<const BodyLoad> loads);
+  // Writes the journal to disk and returns its path (collective; empty without a journal).
+  std::string flush_journal();
 
   // The decomposition the fluid side announced (or the recorded one in a replay).
   const FluidLayout& fluid_layout() const { return layout_; }
@@ -54,6 +63,8 @@ class DemCoupler {
   std::unique_ptr<DemTransport> transport_;
   CouplingTimes times_;
   std::unique_ptr<Recorder> recorder_;
+  std::unique_ptr<Recorder> journal_;
+  std::string journal_path_;
   MPI_Comm side_;
   FluidLayout layout_;
   std::int64_t step_ = -1;       // step of the last send_states

@@ -39,4 +39,8 @@ void Recorder::loads(std::int64_t step, std::span<const BodyLoad> reduced) {
   if (++steps_ % kFlushEvery == 0) writer_->flush();
 }
 
+void Recorder::flush() {
+  if (writer_) writer_->flush();
+}
+
 }  // namespace lbdem

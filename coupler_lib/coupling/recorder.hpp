@@ -20,6 +20,8 @@ class Recorder {
   // Collective over `side`.
   void states(std::int64_t step, std::span<const BodyState> owned);
   void loads(std::int64_t step, std::span<const BodyLoad> reduced);
+  // Everything appended so far on disk (rank 0; a no-op elsewhere).
+  void flush();
 
  private:
   MPI_Comm side_;

@@ -1,5 +1,7 @@
 #include "coupler_lib/coupling/stall_watch.hpp"
 
+#include "coupler_lib/coupling/checkpoint_files.hpp"
+
 #include <algorithm>
 #include <sstream>
 
@@ -40,7 +42,10 @@ void StallWatch::check() const {
     << ") while this program waits for its packets at step " << step_
     << ": one of its ranks is stopped, hung or deadlocked; this program's last completed exchange: "
     << (last_completed_ >= 0 ? "step " + std::to_string(last_completed_) : std::string("none"))
-    << "; last checkpoint: none (this version writes no checkpoints)";
+    << "; last checkpoint: "
+    << (remembered_checkpoint().empty() ? std::string("none")
+                                        : remembered_checkpoint() + " (continue with --restart " +
+                                              remembered_checkpoint() + " on both programs)");
   throw SideError(m.str());
 }
 

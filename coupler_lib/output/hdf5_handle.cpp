@@ -33,6 +33,19 @@ H5Handle create_parallel_file(const std::string& path, MPI_Comm comm) {
                   "creating " + path);
 }
 
+H5Handle open_parallel_file(const std::string& path, MPI_Comm comm) {
+  H5Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "file access list");
+  h5_check(H5Pset_fapl_mpio(fapl, comm, MPI_INFO_NULL), "H5Pset_fapl_mpio");
+  // Quiet: a file that is not HDF5 is reported once, by the caller's message.
+  H5E_auto2_t func = nullptr;
+  void* data = nullptr;
+  H5Eget_auto2(H5E_DEFAULT, &func, &data);
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, fapl);
+  H5Eset_auto2(H5E_DEFAULT, func, data);
+  return H5Handle(id, H5Fclose, "opening " + path + " (missing, truncated or not HDF5)");
+}
+
 H5Handle collective_transfer() {
   H5Handle dxpl(H5Pcreate(H5P_DATASET_XFER), H5Pclose, "transfer list");
   h5_check(H5Pset_dxpl_mpio(dxpl, H5FD_MPIO_COLLECTIVE), "H5Pset_dxpl_mpio");
@@ -46,7 +59,35 @@ void write_attribute_raw(hid_t object, const std::string& name, hid_t type, cons
                 "attribute " + name);
   h5_check(H5Awrite(attr, type, data), "writing attribute " + name);
 }
+void read_attribute_raw(hid_t object, const std::string& name, hid_t type, void* data) {
+  if (H5Aexists(object, name.c_str()) <= 0)
+    throw std::runtime_error("attribute '" + name + "' is missing");
+  H5Handle attr(H5Aopen(object, name.c_str(), H5P_DEFAULT), H5Aclose, "attribute " + name);
+  h5_check(H5Aread(attr, type, data), "reading attribute " + name);
+}
 }  // namespace
+
+double read_double_attribute(hid_t object, const std::string& name) {
+  double v = 0;
+  read_attribute_raw(object, name, H5T_NATIVE_DOUBLE, &v);
+  return v;
+}
+
+long long read_llong_attribute(hid_t object, const std::string& name) {
+  long long v = 0;
+  read_attribute_raw(object, name, H5T_NATIVE_LLONG, &v);
+  return v;
+}
+
+std::string read_string_attribute(hid_t object, const std::string& name) {
+  if (H5Aexists(object, name.c_str()) <= 0)
+    throw std::runtime_error("attribute '" + name + "' is missing");
+  H5Handle attr(H5Aopen(object, name.c_str(), H5P_DEFAULT), H5Aclose, "attribute " + name);
+  H5Handle type(H5Aget_type(attr), H5Tclose, "attribute type");
+  std::string s(H5Tget_size(type), '\0');
+  h5_check(H5Aread(attr, type, s.data()), "reading attribute " + name);
+  return s.substr(0, s.find('\0'));
+}
 
 void write_attribute(hid_t object, const std::string& name, double value) {
   write_attribute_raw(object, name, H5T_NATIVE_DOUBLE, &value);

@@ -37,6 +37,10 @@ void h5_check(herr_t status, const std::string& what);
 // Creates (truncating) `path` for collective writing by every rank of `comm` (MPI-IO).
 H5Handle create_parallel_file(const std::string& path, MPI_Comm comm);
 
+// Opens an existing `path` read-only for every rank of `comm` (MPI-IO). Throws
+// std::runtime_error naming the file when it is missing or not HDF5 (truncated, overwritten).
+H5Handle open_parallel_file(const std::string& path, MPI_Comm comm);
+
 // A property list for collective dataset transfers.
 H5Handle collective_transfer();
 
@@ -44,5 +48,9 @@ H5Handle collective_transfer();
 void write_attribute(hid_t object, const std::string& name, double value);
 void write_attribute(hid_t object, const std::string& name, long long value);
 void write_attribute(hid_t object, const std::string& name, const std::string& value);
+// Their readers; throw std::runtime_error naming the attribute when it is missing.
+double read_double_attribute(hid_t object, const std::string& name);
+long long read_llong_attribute(hid_t object, const std::string& name);
+std::string read_string_attribute(hid_t object, const std::string& name);
 
 }  // namespace lbdem

@@ -70,7 +70,6 @@ void check_body_placement(const std::string& file, const std::vector<Shape>& sha
 
   // Bodies: known shape, inside the box, clear of walls.
   std::vector<Eigen::Matrix3d> rot(bodies.size());
-  double max_extent = 0;
   for (size_t i = 0; i < bodies.size(); ++i) {
     const auto& b = bodies[i];
     if (b.shape < 0 || static_cast<size_t>(b.shape) >= shapes.size())
@@ -78,7 +77,6 @@ void check_body_placement(const std::string& file, const std::vector<Shape>& sha
                      " which does not exist");
     if (!(b.density > 0)) fail(file, "bodies: " + body_name(i) + " needs a positive density");
     const Shape& sh = shapes[static_cast<size_t>(b.shape)];
-    max_extent = std::max(max_extent, clump_extent(sh));
     rot[i] = quaternion(b.orientation).normalized().toRotationMatrix();
     const auto ext = rotated_extent(sh, rot[i]);
     for (int d = 0; d < 3; ++d)
@@ -114,43 +112,63 @@ void check_body_placement(const std::string& file, const std::vector<Shape>& sha
     }
   }
 
-  // Body-body overlap of clump spheres: cell list on centres (cell = two extents), minimum
-  // image on periodic axes.
-  const double h = 2 * max_extent;
+  std::vector<BodyPose> poses;
+  for (size_t i = 0; i < bodies.size(); ++i)
+    poses.push_back({bodies[i].shape, vector(bodies[i].position), rot[i]});
+  if (const auto o = deepest_clump_overlap(shapes, poses, box_lo, box_hi, p.periodic))
+    fail(file, "bodies: " + body_name(o->a) + " and " + body_name(o->b) + " overlap initially");
+}
+
+std::optional<ClumpOverlap> deepest_clump_overlap(const std::vector<Shape>& shapes,
+                                                  const std::vector<BodyPose>& bodies,
+                                                  const std::array<double, 3>& box_lo,
+                                                  const std::array<double, 3>& box_hi,
+                                                  const std::array<bool, 3>& periodic) {
+  double max_extent = 0;
+  for (const BodyPose& b : bodies)
+    max_extent = std::max(max_extent, clump_extent(shapes[static_cast<size_t>(b.shape)]));
+  // Cell list on centres (cell = two extents), minimum image on periodic axes.
+  const double h = std::max(2 * max_extent, std::numeric_limits<double>::min());
   std::array<long, 3> nc{};
   std::array<double, 3> len{};
   for (int d = 0; d < 3; ++d) {
     len[d] = box_hi[d] - box_lo[d];
     nc[d] = std::max(1L, static_cast<long>(len[d] / h));
   }
-  auto cell = [&](const std::array<double, 3>& x, int d) {
-    return std::clamp(static_cast<long>((x[d] - box_lo[d]) / len[d] * nc[d]), 0L, nc[d] - 1);
+  auto cell = [&](const Eigen::Vector3d& x, int d) {
+    double u = (x[d] - box_lo[d]) / len[d];
+    if (periodic[d]) u -= std::floor(u);
+    return std::clamp(static_cast<long>(u * double(nc[d])), 0L, nc[d] - 1);
   };
   std::unordered_map<long, std::vector<size_t>> grid;
   auto key = [&](long i, long j, long k) { return i + nc[0] * (j + nc[1] * k); };
   for (size_t i = 0; i < bodies.size(); ++i)
-    grid[key(cell(bodies[i].position, 0), cell(bodies[i].position, 1), cell(bodies[i].position, 2))]
-        .push_back(i);
-  auto overlap = [&](size_t a, size_t b) {
-    const auto& A = bodies[a];
-    const auto& B = bodies[b];
+    grid[key(cell(bodies[i].x, 0), cell(bodies[i].x, 1), cell(bodies[i].x, 2))].push_back(i);
+  std::optional<ClumpOverlap> worst;
+  auto measure = [&](size_t a, size_t b) {
+    const BodyPose& A = bodies[a];
+    const BodyPose& B = bodies[b];
     const Shape& sa = shapes[static_cast<size_t>(A.shape)];
     const Shape& sb = shapes[static_cast<size_t>(B.shape)];
-    Eigen::Vector3d dxy = vector(B.position) - vector(A.position);
+    Eigen::Vector3d dxy = B.x - A.x;
     for (int d = 0; d < 3; ++d)
-      if (p.periodic[d]) dxy[d] -= len[d] * std::round(dxy[d] / len[d]);
-    if (dxy.norm() >= clump_extent(sa) + clump_extent(sb)) return false;
+      if (periodic[d]) dxy[d] -= len[d] * std::round(dxy[d] / len[d]);
+    if (dxy.norm() >= clump_extent(sa) + clump_extent(sb)) return;
     for (size_t u = 0; u < sa.clump.centers.size(); ++u)
       for (size_t v = 0; v < sb.clump.centers.size(); ++v) {
-        const Eigen::Vector3d ca = rot[a] * sa.clump.centers[u];
-        const Eigen::Vector3d cb = dxy + rot[b] * sb.clump.centers[v];
-        if ((cb - ca).norm() < sa.clump.radii[u] + sb.clump.radii[v]) return true;
+        const Eigen::Vector3d ca = A.rot * sa.clump.centers[u];
+        const Eigen::Vector3d cb = dxy + B.rot * sb.clump.centers[v];
+        const double depth = sa.clump.radii[u] + sb.clump.radii[v] - (cb - ca).norm();
+        if (depth <= 0) continue;
+        const double fraction = depth / std::min(sa.clump.radii[u], sb.clump.radii[v]);
+        if (!worst || fraction > worst->fraction)
+          worst = ClumpOverlap{a, b, depth, fraction, A.x + ca + 0.5 * (cb - ca)};
       }
-    return false;
   };
+  std::vector<std::pair<size_t, size_t>> seen;
   for (size_t i = 0; i < bodies.size(); ++i) {
-    const long ci = cell(bodies[i].position, 0), cj = cell(bodies[i].position, 1),
-               ck = cell(bodies[i].position, 2);
+    const long ci = cell(bodies[i].x, 0), cj = cell(bodies[i].x, 1), ck = cell(bodies[i].x, 2);
+    seen.clear();
     for (long dk = -1; dk <= 1; ++dk)
       for (long dj = -1; dj <= 1; ++dj)
         for (long di = -1; di <= 1; ++di) {
@@ -158,18 +176,23 @@ void check_body_placement(const std::string& file, const std::vector<Shape>& sha
           bool skip = false;
           for (int d = 0; d < 3; ++d) {
             if (c[d] < 0 || c[d] >= nc[d]) {
-              if (!p.periodic[d]) skip = true;
+              if (!periodic[d]) skip = true;
               c[d] = (c[d] + nc[d]) % nc[d];
             }
           }
           if (skip) continue;
           auto it = grid.find(key(c[0], c[1], c[2]));
           if (it == grid.end()) continue;
-          for (size_t j : it->second)
-            if (j > i && overlap(i, j))
-              fail(file, "bodies: " + body_name(i) + " and " + body_name(j) + " overlap initially");
+          for (size_t j : it->second) {
+            // With fewer than three cells on an axis, two neighbour cells are the same cell.
+            if (j <= i || std::find(seen.begin(), seen.end(), std::pair{i, j}) != seen.end())
+              continue;
+            seen.emplace_back(i, j);
+            measure(i, j);
+          }
         }
   }
+  return worst;
 }
 
 }  // namespace lbdem

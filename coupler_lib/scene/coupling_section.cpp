@@ -21,9 +21,9 @@ CouplingParams parse_coupling(Section& s) {
   p.checkpoint_interval =
       s.get<double>("checkpoint_interval", 0.0, "simulated s between checkpoints (0: none)",
                     Bounds::non_negative());
-  if (p.checkpoint_interval > 0)
-    s.fail("checkpoint_interval",
-           "checkpoints are not written by this version; leave the key out or set 0");
+  p.checkpoint_keep =
+      s.get<int>("checkpoint_keep", 2, "checkpoints kept on disk (older ones are removed)",
+                 Bounds::at_least(1));
   p.handshake_timeout =
       s.get<double>("handshake_timeout", 60.0, "wall s to wait for the other program at start",
                     Bounds::positive());
@@ -37,6 +37,12 @@ CouplingParams parse_coupling(Section& s) {
   p.overlap = s.get<bool>("overlap", false,
                           "the two programs compute at the same time, the fluid on body states "
                           "one fluid step older");
+  // A checkpoint holds the state of one step on both sides; with overlap the fluid runs on
+  // states one step older than the DEM's, a pair no checkpoint here describes.
+  if (p.overlap && p.checkpoint_interval > 0)
+    s.fail("checkpoint_interval",
+           "checkpoints need coupling.overlap: false (with overlap the two programs are one "
+           "step apart); set overlap: false or checkpoint_interval: 0");
   s.finish();
   return p;
 }

@@ -13,6 +13,7 @@ struct CouplingParams {
   int exchange_interval = 1;   // outer (fluid) steps between two packet exchanges
   double output_interval = 0;  // simulated s between outputs; 0 = no periodic output
   double checkpoint_interval = 0;  // simulated s between checkpoints; 0 = no checkpoints
+  int checkpoint_keep = 2;         // checkpoints kept on disk, newest first
   double handshake_timeout = 60;   // wall s a side waits for the other at the handshake
   double stall_timeout = 0;        // wall s without packets before the job ends; 0 = automatic
   std::string wait = "backoff";    // how a waiting side waits: backoff (sleeps) | blocking (spins)

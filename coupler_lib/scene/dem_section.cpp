@@ -104,6 +104,11 @@ DemParams parse_dem(Section& s) {
   p.neighbor_skin = s.get<double>(
       "neighbor_skin", 0.0, "neighbour-list skin in m (0: half the largest clump-sphere radius)",
       Bounds::non_negative());
+  p.max_overlap = s.get<double>(
+      "max_overlap", 0.5,
+      "coupled runs stop when two bodies' clump spheres overlap deeper than this fraction of the "
+      "smaller sphere radius (0: no check)",
+      Bounds::closed(0.0, 2.0));
   {
     auto o = s.section_or_defaults("output", "DEM-only output (HDF5 + XDMF bodies, CSV energy)");
     p.output.interval =

@@ -59,6 +59,7 @@ struct DemParams {
   std::array<bool, 3> periodic{false, false, false};
   std::vector<DemWall> walls;
   double neighbor_skin = 0;  // m; 0 = half the largest clump-sphere radius
+  double max_overlap = 0.5;  // coupled stability watch: deepest overlap / smaller sphere radius
   DemOutput output;
   DemLubrication lubrication;
 };

@@ -6,16 +6,30 @@
 #include <vector>
 
 #include "coupler_lib/output/gather.hpp"
+#include "coupler_lib/output/series_resume.hpp"
 
 namespace lbdem {
 
-BodyTrace::BodyTrace(const std::string& path, MPI_Comm comm) : path_(path), comm_(comm) {
+BodyTrace::BodyTrace(const std::string& path, MPI_Comm comm, long long resume_bytes)
+    : path_(path), comm_(comm) {
   MPI_Comm_rank(comm, &rank_);
   if (rank_ != 0) return;
+  out_.precision(17);  // round-trip digits: the invariance and replay checks compare at round-off
+  if (resume_bytes >= 0) {
+    cut_series_to(path, resume_bytes);
+    out_.open(path, std::ios::app);
+    if (!out_) throw std::runtime_error(path + ": cannot append to the body trace");
+    return;
+  }
   out_.open(path);
   if (!out_) throw std::runtime_error(path + ": cannot write the body trace");
   out_ << "time,id,x,y,z,vx,vy,vz,wx,wy,wz,qw,qx,qy,qz,fx,fy,fz,tx,ty,tz\n";
-  out_.precision(17);  // round-trip digits: the invariance and replay checks compare at round-off
+}
+
+long long BodyTrace::flushed_bytes() {
+  if (rank_ != 0) return 0;
+  out_.flush();
+  return static_cast<long long>(out_.tellp());
 }
 
 void BodyTrace::write(double time, std::span<const BodyState> states,

@@ -14,7 +14,10 @@ namespace lbdem {
 
 class BodyTrace {
  public:
-  BodyTrace(const std::string& path, MPI_Comm comm);
+  // `resume_bytes` >= 0: continue a restarted run's trace, cut back to that length.
+  BodyTrace(const std::string& path, MPI_Comm comm, long long resume_bytes = -1);
+  // Bytes written so far, on disk (rank 0; 0 elsewhere): what a checkpoint stores.
+  long long flushed_bytes();
   // Collective: `states` and `loads` are this rank's owned bodies (loads may be empty at the
   // first row); rank 0 gathers them and writes one row per body, sorted by id.
   void write(double time, std::span<const BodyState> states, std::span<const BodyLoad> loads);

@@ -7,10 +7,14 @@
 #include "coupler_lib/app/progress.hpp"
 #include "coupler_lib/coupling/dem_coupler.hpp"
 #include "coupler_lib/coupling/schedule.hpp"
+#include "coupler_lib/coupling/stop_request.hpp"
 #include "coupler_lib/coupling/world.hpp"
+#include "coupler_lib/scene/scene_fingerprint.hpp"
 #include "coupler_lib/scene/shape_catalogue.hpp"
 #include "dem_app/body_output.hpp"
 #include "dem_app/coupling/body_trace.hpp"
+#include "dem_app/coupling/body_watch.hpp"
+#include "dem_app/coupling/dem_checkpoint.hpp"
 #include "dem_app/dem_run.hpp"
 #include "dem_app/dem_setup.hpp"
 #include "dem_app/lammps_engine.hpp"
@@ -65,26 +69,59 @@ int run_coupled_dem(AppContext& ctx) {
     engine.set_extra_force(std::int64_t(id), -rho_f * volume * g);
   }
 
-  std::unique_ptr<DemCoupler> coupler = replay ? std::make_unique<DemCoupler>(ctx, ctx.cli.replay)
-                                               : std::make_unique<DemCoupler>(world, scene);
+  // Checkpoints need both programs at the same step; with overlap they are one step apart
+  // (the scene refuses checkpoint_interval there, and stop signals keep their default).
+  const bool checkpoints = !replay && !scene.coupling.overlap;
+  std::string journal;
+  if (checkpoints) {
+    install_stop_handlers();
+    if (ctx.rank == 0) std::filesystem::create_directories(checkpoint_directory(scene));
+    journal =
+        (std::filesystem::path(checkpoint_directory(scene)) / (scene.name + "_dem_journal.h5"))
+            .string();
+  }
+  std::unique_ptr<DemCoupler> coupler = replay
+                                            ? std::make_unique<DemCoupler>(ctx, ctx.cli.replay)
+                                            : std::make_unique<DemCoupler>(world, scene, journal);
+  const int fluid_ranks = replay ? 0 : world.peer().size;
+
+  // A restart: the checkpoint's step, its trace length, and the replay of its journal.
+  std::int64_t first = 0;
+  long long trace_bytes = -1;
+  std::unique_ptr<DemCoupler> history;
+  if (!ctx.cli.restart.empty()) {
+    std::string prefix;
+    DemRestart r;
+    try {
+      prefix = restart_prefix(ctx.cli.restart);
+      r = read_dem_checkpoint(prefix,
+                              make_checkpoint_header(scene, "dem", 0, 0, fluid_ranks, ctx.size));
+    } catch (const std::runtime_error& e) {
+      throw SideError(e.what());
+    }
+    first = r.header.step;
+    trace_bytes = r.trace_bytes;
+    remember_checkpoint(prefix);
+    SideInfo journal_ctx = ctx;  // the journal is identified by the scene fingerprint
+    journal_ctx.scene_hash = scene_fingerprint(scene);
+    history = std::make_unique<DemCoupler>(journal_ctx, r.path);
+    if (ctx.rank == 0)
+      ctx.log->info("restart from {} at step {} (t = {:.6e} s): replaying the DEM's {} steps",
+                    prefix, first, r.header.time, first);
+  }
+
   std::unique_ptr<BodySnapshotWriter> snapshots;
   std::unique_ptr<BodyTrace> trace;
   if (schedule.output_interval > 0) {
     snapshots = std::make_unique<BodySnapshotWriter>(dir.string(), scene.name, ctx.side_comm);
-    trace =
-        std::make_unique<BodyTrace>((dir / (scene.name + "_bodies.csv")).string(), ctx.side_comm);
+    trace = std::make_unique<BodyTrace>((dir / (scene.name + "_bodies.csv")).string(),
+                                        ctx.side_comm, history ? trace_bytes : -1);
   }
 
   Progress progress(ctx.log, scene.time.progress_interval, scene.time.end);
   std::vector<BodyState> owned = engine.owned_states(0);
-  if (trace) {
-    trace->write(0.0, owned, {});
-    snapshots->write(owned, 0.0);
-  }
-  coupler->send_states(0, owned);
   double dem_s = 0;  // wall time in LAMMPS, for the per-step split reported at the end
-  for (std::int64_t step = 1; step <= schedule.steps; ++step) {
-    const std::vector<BodyLoad> loads = coupler->receive_loads(step);
+  auto advance = [&](std::int64_t step, const std::vector<BodyLoad>& loads) {
     for (const BodyLoad& l : loads)
       engine.set_load(l.id, Eigen::Vector3d(l.f[0], l.f[1], l.f[2]),
                       Eigen::Vector3d(l.t[0], l.t[1], l.t[2]));
@@ -92,6 +129,36 @@ int run_coupled_dem(AppContext& ctx) {
     engine.run(schedule.dem_substeps);
     dem_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
     owned = engine.owned_states(step);
+  };
+  if (history) {
+    // Steps 0..first again, fed by the journal, each state checked against it bit for bit.
+    history->send_states(0, owned);
+    coupler->journal_states(0, owned);
+    const auto replay_start = std::chrono::steady_clock::now();
+    for (std::int64_t step = 1; step <= first; ++step) {
+      const std::vector<BodyLoad> loads = history->receive_loads(step);
+      coupler->journal_loads(step, loads);
+      advance(step, loads);
+      history->send_states(step, owned);
+      coupler->journal_states(step, owned);
+    }
+    history.reset();
+    if (ctx.rank == 0)
+      ctx.log->info(
+          "replayed the DEM's {} steps bit for bit in {:.3f} s", first,
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - replay_start).count());
+  } else if (trace) {
+    trace->write(0.0, owned, {});
+    snapshots->write(owned, 0.0);
+  }
+  coupler->send_states(first, owned);
+  std::string checkpoint;  // the last one written
+  bool stopped = false;
+  int unstable = 0;  // kFluidUnstable | kBodiesUnstable as both programs agreed
+  const BodyWatchLimits limits = body_watch_limits(scene);
+  for (std::int64_t step = first + 1; step <= schedule.steps; ++step) {
+    const std::vector<BodyLoad> loads = coupler->receive_loads(step);
+    advance(step, loads);
     const double time = double(step) * schedule.dt;
     if (schedule.output_at(step) && trace) {
       trace->write(time, owned, loads);
@@ -99,9 +166,51 @@ int run_coupled_dem(AppContext& ctx) {
     }
     coupler->send_states(step, owned);
     progress.update(step, time);
+    if (!checkpoints) continue;
+    const std::string trouble = check_bodies(owned, step, time, setup, limits, ctx.side_comm);
+    const int flags = agree_flags(
+        (stop_signal() != 0 ? kStopRequested : 0) | (trouble.empty() ? 0 : kBodiesUnstable), world,
+        step);
+    unstable = flags & (kFluidUnstable | kBodiesUnstable);
+    if (unstable) {
+      // Both programs stop here; the one that found the problem prints the diagnosis.
+      if (ctx.rank == 0) {
+        if (!trouble.empty())
+          ctx.log->error("{}", trouble);
+        else
+          ctx.log->error(
+              "stopped at step {}: fluid_app found the fluid unstable (its diagnosis "
+              "above)",
+              step);
+        const std::string& last = remembered_checkpoint();
+        ctx.log->error("last good checkpoint: {}",
+                       last.empty() ? std::string("none (set coupling.checkpoint_interval)")
+                                    : last + "; continue after changing the scene with: " +
+                                          restart_command(scene, last, fluid_ranks, ctx.size));
+      }
+      break;
+    }
+    stopped = (flags & kStopRequested) != 0;
+    if (!stopped && !schedule.checkpoint_at(step)) continue;
+    checkpoint = checkpoint_prefix(scene, step);
+    write_dem_checkpoint(checkpoint, coupler->flush_journal(),
+                         make_checkpoint_header(scene, "dem", step, time, fluid_ranks, ctx.size),
+                         trace ? trace->flushed_bytes() : -1, ctx.side_comm);
+    // Older checkpoints go only once both halves of this one exist.
+    wait_for_both(world, step);
+    remember_checkpoint(checkpoint);
+    if (ctx.rank == 0) prune_checkpoints(scene, "dem", scene.coupling.checkpoint_keep);
+    if (stopped) {
+      if (ctx.rank == 0)
+        ctx.log->info(
+            "stopped on request at step {} (t = {:.6e} s); checkpoint: {}; continue with: {}", step,
+            time, checkpoint, restart_command(scene, checkpoint, fluid_ranks, ctx.size));
+      break;
+    }
   }
   if (ctx.rank == 0) {
-    ctx.log->info("coupled DEM run finished after {} fluid steps", schedule.steps);
+    if (!stopped && !unstable)
+      ctx.log->info("coupled DEM run finished after {} fluid steps", schedule.steps);
     const CouplingTimes c = coupler->times();
     const double n = double(std::max<std::int64_t>(schedule.steps, 1));
     ctx.log->info(
@@ -113,7 +222,15 @@ int run_coupled_dem(AppContext& ctx) {
       ctx.log->info("replay of {}: the states of all {} steps match the recording bit for bit",
                     ctx.cli.replay, schedule.steps);
   }
-  return 0;
+  // The journal served the checkpoints (each holds its own copy up to its step).
+  coupler.reset();
+  if (ctx.rank == 0 && !journal.empty()) {
+    std::error_code ec;
+    std::filesystem::remove(journal, ec);
+    if (std::filesystem::is_empty(checkpoint_directory(scene), ec))
+      std::filesystem::remove(checkpoint_directory(scene), ec);
+  }
+  return unstable ? kExitUnstable : 0;
 }
 
 }  // namespace lbdem

@@ -4,20 +4,35 @@
 #include <iomanip>
 #include <stdexcept>
 
+#include "coupler_lib/output/series_resume.hpp"
+
 namespace lbdem {
 
 MomentumAudit::MomentumAudit(const std::string& path, const Scene& scene,
                              const std::vector<Shape>& shapes, std::array<double, 3> net_weight,
-                             MPI_Comm comm)
+                             MPI_Comm comm, long long resume_bytes)
     : path_(path), scene_(scene), weight_(net_weight), comm_(comm) {
   for (const Shape& s : shapes) volume_.push_back(s.mass.volume);
   MPI_Comm_rank(comm, &rank_);
   if (rank_ != 0) return;
+  if (resume_bytes >= 0) {
+    cut_series_to(path, resume_bytes);
+    out_.open(path, std::ios::app);
+    if (!out_) throw std::runtime_error("cannot append to the momentum audit file " + path);
+    out_ << std::setprecision(17);
+    return;
+  }
   out_.open(path, std::ios::trunc);
   if (!out_) throw std::runtime_error("cannot create the momentum audit file " + path);
   out_ << "step,time_s,fluid_px,fluid_py,fluid_pz,bodies_px,bodies_py,bodies_pz,applied_px,"
           "applied_py,applied_pz\n"
        << std::setprecision(17);
+}
+
+long long MomentumAudit::bytes() {
+  if (rank_ != 0) return 0;
+  out_.flush();
+  return static_cast<long long>(out_.tellp());
 }
 
 template <class T>

@@ -17,8 +17,8 @@
 #include <vector>
 
 #include "coupler_lib/coupling/packets.hpp"
-#include "coupler_lib/scene/scene.hpp"
 #include "coupler_lib/geometry/shape.hpp"
+#include "coupler_lib/scene/scene.hpp"
 #include "fluid_app/fluid_solver.hpp"
 
 namespace lbdem {
@@ -27,8 +27,9 @@ class MomentumAudit {
  public:
   // Every fluid rank constructs it (the rows are collective); rank 0 of `comm` writes.
   // net_weight: W = sum_k (rho_k - rho_f) V_k g, N.
+  // `resume_bytes` >= 0: continue a restarted run's audit, cut back to that length.
   MomentumAudit(const std::string& path, const Scene& scene, const std::vector<Shape>& shapes,
-                std::array<double, 3> net_weight, MPI_Comm comm);
+                std::array<double, 3> net_weight, MPI_Comm comm, long long resume_bytes = -1);
 
   // Collective, after a step. `states`: the bodies this rank received after the step (each
   // body is counted on the rank whose interior box holds its centre); the covered fluid Q is
@@ -38,6 +39,8 @@ class MomentumAudit {
              std::span<const BodyState> states);
 
   const std::string& path() const { return path_; }
+  // Bytes on disk so far (rank 0; 0 elsewhere), for checkpoints.
+  long long bytes();
 
  private:
   std::string path_;

@@ -13,8 +13,8 @@ void StateFeed::receive(std::int64_t step) {
   pending_ = true;
 }
 
-const std::vector<BodyState>& StateFeed::start() {
-  receive(0);
+const std::vector<BodyState>& StateFeed::start(std::int64_t step) {
+  receive(step);
   pending_ = false;
   return held_;
 }

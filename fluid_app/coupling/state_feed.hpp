@@ -21,8 +21,9 @@ class StateFeed {
  public:
   StateFeed(FluidCoupler& coupler, bool overlap) : coupler_(&coupler), overlap_(overlap) {}
 
-  // The states before the first step.
-  const std::vector<BodyState>& start();
+  // The states before the first step (`step`: the step the run starts from, 0 or that of
+  // the checkpoint it restarts from).
+  const std::vector<BodyState>& start(std::int64_t step = 0);
   // After lattice step `step`: send its loads (with overlap, after receiving the states of
   // step - 1, which the DEM sent while this step ran).
   void send(std::int64_t step, std::span<const BodyLoad> loads);

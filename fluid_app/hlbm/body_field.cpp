@@ -415,6 +415,24 @@ std::vector<BodyLoad> BodyField<T>::penalty_loads(std::int64_t step) {
   return loads;
 }
 
+template <class T>
+std::vector<typename BodyField<T>::CoveredMemory> BodyField<T>::covered_memory() const {
+  std::vector<CoveredMemory> out;
+  for (const Tracked& t : tracked_)
+    if (t.id >= 0) out.push_back({t.id, t.covered, t.covered_moment});
+  return out;
+}
+
+template <class T>
+void BodyField<T>::restore_covered(const CoveredMemory& m) {
+  const std::int32_t slot = slot_of(m.id);
+  if (slot < 0)
+    throw std::out_of_range("restore_covered: body " + std::to_string(m.id) +
+                            " is not tracked on this fluid rank");
+  tracked_[std::size_t(slot)].covered = m.covered;
+  tracked_[std::size_t(slot)].covered_moment = m.covered_moment;
+}
+
 template class BodyField<double>;
 template class BodyField<float>;
 

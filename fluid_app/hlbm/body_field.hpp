@@ -88,6 +88,16 @@ class BodyField {
   // cells (its last Q could then not be returned; the coupler's reach prevents it).
   std::vector<BodyLoad> penalty_loads(std::int64_t step);
 
+  // What penalty_loads keeps from one step to the next (Q^n, L^n of this rank's cells per
+  // tracked body), for checkpoints; restore_covered sets it for a tracked body after a
+  // restart's first update (throws std::out_of_range when the body is not tracked here).
+  struct CoveredMemory {
+    std::int64_t id = -1;
+    std::array<double, 3> covered{}, covered_moment{};
+  };
+  std::vector<CoveredMemory> covered_memory() const;
+  void restore_covered(const CoveredMemory& m);
+
   // The same loads by momentum exchange over the boundary links of the cells this rank owns
   // (the older method, fluid.loads: momentum_exchange; it misses the momentum of cells that
   // enter or leave a moving body's band and the body force inside it).

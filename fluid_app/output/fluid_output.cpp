@@ -27,7 +27,7 @@ void make_output_directory(const std::string& dir, MPI_Comm comm) {
 
 FluidOutput::FluidOutput(const FluidOutputParams& params, const UnitConverter& units,
                          const std::string& scene_name, MPI_Comm comm,
-                         const std::array<int, 3>& global)
+                         const std::array<int, 3>& global, long long series_resume_bytes)
     : params_(params), units_(units), comm_(comm) {
   MPI_Comm_rank(comm, &rank_);
   make_output_directory(params.directory, comm);
@@ -37,7 +37,8 @@ FluidOutput::FluidOutput(const FluidOutputParams& params, const UnitConverter& u
     quantities_ = {params.fields->velocity, params.fields->density, params.fields->pressure,
                    params.fields->double_precision};
   }
-  if (params.series) series_ = std::make_unique<SeriesCsv>(prefix_ + "_series.csv", rank_ == 0);
+  if (params.series)
+    series_ = std::make_unique<SeriesCsv>(prefix_ + "_series.csv", rank_ == 0, series_resume_bytes);
 }
 
 void FluidOutput::write(long step, double time, const MacroFields& fields) {

@@ -20,7 +20,8 @@ namespace lbdem {
 class FluidOutput {
  public:
   FluidOutput(const FluidOutputParams& params, const UnitConverter& units,
-              const std::string& scene_name, MPI_Comm comm, const std::array<int, 3>& global);
+              const std::string& scene_name, MPI_Comm comm, const std::array<int, 3>& global,
+              long long series_resume_bytes = -1);
 
   // Whether write() has anything to do at this step (fields or series due).
   bool due(long step) const { return fields_due(step) || series_due(step); }
@@ -29,6 +30,8 @@ class FluidOutput {
   // Paths of what has been written so far (for logs and tests).
   std::vector<std::string> xdmf_files() const;
   std::optional<std::string> series_file() const;
+  // Bytes of the series on disk (rank 0; -1 elsewhere or without series), for checkpoints.
+  long long series_bytes() { return series_ ? series_->bytes() : -1; }
 
  private:
   bool fields_due(long step) const { return params_.fields && step % params_.fields->every == 0; }

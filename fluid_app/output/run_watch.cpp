@@ -51,12 +51,13 @@ std::string last_good_path(const FluidOutputParams& p, const std::string& scene_
 }  // namespace
 
 template <class T>
-RunWatch<T>::RunWatch(AppContext& ctx, FluidRun<T>& run)
+RunWatch<T>::RunWatch(AppContext& ctx, FluidRun<T>& run, long long series_resume_bytes)
     : ctx_(ctx), run_(run), params_(run.params().output) {
   const FluidParams& fp = run.params();
   const MPI_Comm comm = run.solver().comm();
   if (params_.writes_files())
-    output_ = std::make_unique<FluidOutput>(params_, fp.units, ctx.scene.name, comm, fp.cells);
+    output_ = std::make_unique<FluidOutput>(params_, fp.units, ctx.scene.name, comm, fp.cells,
+                                            series_resume_bytes);
   if (params_.stability.interval > 0) {
     const std::string lg = last_good_path(params_, ctx.scene.name);
     if (lg.find('/') != std::string::npos)
@@ -76,7 +77,7 @@ template <class T>
 void RunWatch<T>::observe(const FluidSolver<T>& solver, const StepInfo& info) {
   if (failure_) return;
   const long step = static_cast<long>(info.step);
-  const bool check = stability_ && stability_->due(step);
+  const bool check = stability_ && (stability_->due(step) || (extra_ && extra_(step)));
   const bool write = output_ && output_->due(step);
   if (!check && !write) return;
   fill_macro_fields(solver, fields_);

@@ -11,6 +11,7 @@
 //
 // The macroscopic fields are computed only at steps where something is due.
 #include <chrono>
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -23,7 +24,6 @@
 namespace lbdem {
 
 // Exit codes of fluid_app beyond 0 (done) and 1 (bad scene or error).
-inline constexpr int kExitUnstable = 3;          // the stability watch stopped the run
 inline constexpr int kExitValidationFailed = 4;  // error above fluid.validation.tolerance
 
 // Density and physical velocity of the solver's interior cells, in double precision.
@@ -35,11 +35,17 @@ class RunWatch {
  public:
   // Collective. Registers itself with `run` (must outlive it) and, for a validation case that
   // starts from its analytic solution, sets the initial state.
-  RunWatch(AppContext& ctx, FluidRun<T>& run);
+  // `series_resume_bytes` >= 0: a restart continues the series from that length.
+  RunWatch(AppContext& ctx, FluidRun<T>& run, long long series_resume_bytes = -1);
   RunWatch(const RunWatch&) = delete;
   RunWatch& operator=(const RunWatch&) = delete;
 
   bool stopped() const { return failure_.has_value(); }
+  // Also check the fluid at the steps `extra` names (a coupled run: every checkpoint step, so
+  // that a checkpoint always holds a state that passed the check).
+  void check_also_at(std::function<bool(long)> extra) { extra_ = std::move(extra); }
+  // Bytes of the CSV series on disk (rank 0; -1 without), for checkpoints.
+  long long series_bytes() { return output_ ? output_->series_bytes() : -1; }
   // Collective, after the loop: the validation report; the exit code.
   int finish();
 
@@ -53,6 +59,7 @@ class RunWatch {
   std::unique_ptr<StabilityWatch> stability_;
   std::optional<ReferenceSolution> reference_;
   std::optional<StabilityFailure> failure_;
+  std::function<bool(long)> extra_;
   MacroFields fields_;
   std::chrono::steady_clock::time_point started_;
 };

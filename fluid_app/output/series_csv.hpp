@@ -13,7 +13,10 @@ namespace lbdem {
 class SeriesCsv {
  public:
   // Every rank constructs it; only `writer` opens (and truncates) the file.
-  SeriesCsv(const std::string& path, bool writer);
+  // `resume_bytes` >= 0: continue a restarted run's series, cut back to that length.
+  SeriesCsv(const std::string& path, bool writer, long long resume_bytes = -1);
+  // Bytes on disk so far (the writer; -1 elsewhere): what a checkpoint stores.
+  long long bytes();
   void append(long step, double time, const DomainMeans& m);
   const std::string& path() const { return path_; }
 

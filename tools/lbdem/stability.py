@@ -48,7 +48,7 @@ CASES = {
     "periodic_rank_crossing": ("runs", "3:1", "travel"),
     "packing_phi05": ("runs", "1:1", "none"),
     "body_3_cells": ("runs", "1:1", "vs_base"),
-    "dem_dt_too_large": ("runs", "1:1", "pair"),
+    "dem_dt_too_large": ("diagnosed", "1:1", "none"),
     "output_interval_below_step": ("runs", "1:1", "rows_per_step"),
 }
 VALIDATION = re.compile(r"L2 relative velocity error (\S+),")

@@ -1,0 +1,62 @@
+#pragma once
+// The fluid half of a checkpoint (docs/reliability.md, "Checkpoint and restart"): one HDF5
+// file written by all fluid ranks together (MPI-IO), readable by any number of fluid ranks.
+//
+//   populations       [19][nz][ny][nx] in the run's precision: the post-stream populations
+//                     of the whole lattice, each rank writing its block (the global layout,
+//                     so a restart may use another decomposition). Memory: one extra copy of
+//                     the rank's interior populations while writing; file: 19 x 8 B per cell
+//                     in double (4 B in float).
+//   solver_memory     step count, uniform force, controller integral, applied impulse, mean
+//                     flow (SolverMemory).
+//   covered           per fluid rank and body: the covered fluid momentum Q and moment L of
+//                     the last step, which the next penalization load differences against.
+//   attributes        the checkpoint header, a checksum of the populations, and the length
+//                     of the CSV series at the checkpoint (series, momentum audit).
+// The porosity field is not stored: it is rebuilt from the body states of the checkpoint's
+// step, which the DEM side sends again at the restart.
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "coupler_lib/coupling/checkpoint_files.hpp"
+#include "fluid_app/fluid_solver.hpp"
+
+namespace lbdem {
+
+// Q and L of one body on one fluid rank (lattice units).
+struct CoveredRecord {
+  std::int64_t rank = 0;
+  std::int64_t id = 0;
+  std::array<double, 3> covered{}, covered_moment{};
+};
+
+struct SeriesLengths {
+  long long series = -1;    // bytes of <name>_series.csv (-1: none)
+  long long momentum = -1;  // bytes of <name>_momentum.csv (-1: none)
+};
+
+// Collective over the solver's ranks: writes fluid_half(prefix) through a temporary name.
+template <class T>
+void write_fluid_checkpoint(const std::string& prefix, const CheckpointHeader& header,
+                            const FluidSolver<T>& solver, std::span<const CoveredRecord> mine,
+                            const SeriesLengths& lengths);
+
+struct FluidRestart {
+  CheckpointHeader header;
+  SolverMemory memory;                 // to restore after the run's own set-up of forces
+  std::vector<CoveredRecord> covered;  // every rank's records of the stopped run
+  SeriesLengths lengths;
+};
+
+// Collective: checks the header against `expected`, reads this rank's block of populations
+// into `populations` (for FluidSolver::set_interior_populations, after restore(memory)) and
+// verifies the checksum. Throws std::runtime_error naming the file and what to do when the
+// file is unreadable, of another scene or version, or corrupted.
+template <class T>
+FluidRestart read_fluid_checkpoint(const std::string& prefix, const CheckpointHeader& expected,
+                                   const FluidSolver<T>& solver, std::vector<T>& populations);
+
+}  // namespace lbdem

@@ -1,0 +1,139 @@
+#!/usr/bin/env bash
+# Checkpoint and restart of both programs together (docs/reliability.md), fluid NF : DEM ND:
+#   1. the whole run straight (79 steps);
+#   2. the first half (time.end cut to step 40, checkpoint every 10 steps, keep 2), then
+#      --restart from the checkpoint folder to the original end: the body trace and the
+#      momentum audit must equal the straight run's byte for byte, and only 2 checkpoints
+#      may remain;
+#   3. the same checkpoint continued on NF + 1 fluid ranks: equal within round-off;
+#   4. SIGTERM to one fluid rank mid-run: both programs write a checkpoint, end with status 0
+#      and print the restart command; the restart reproduces the straight run byte for byte;
+#   5. refusals: a flipped byte in the populations, a truncated fluid half, a missing DEM
+#      half, another scene (viscosity changed), another DEM rank count.
+# With a fifth argument `quick`, parts 1 to 4 only.
+# Usage: restart_test.sh BUILD_DIR SOURCE_DIR NF ND [quick]
+set -euo pipefail
+build=$1 src=$2 nf=$3 nd=$4 mode=${5:-}
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+work=$(mktemp -d)
+mpirun_pid=""
+cleanup() {
+  [ -n "$mpirun_pid" ] && kill "$mpirun_pid" 2> /dev/null || true
+  rm -rf "$work"
+}
+trap cleanup EXIT
+cd "$work"
+started=$(date +%s.%N)
+fluid=$build/fluid_app/fluid_app dem=$build/dem_app/dem_app
+run() {  # run LOG NF ND [fluid/dem options...] : scene is scene.yaml
+  local log=$1 a=$2 b=$3
+  shift 3
+  mpirun -np "$a" "$fluid" "$@" scene.yaml : -np "$b" "$dem" "$@" scene.yaml > "$log" 2>&1
+}
+fail() { echo "FAIL: $*"; exit 1; }
+scene() {  # scene END [extra coupling lines]
+  sed "s/end: 2.0e-2/end: $1/" "$src/tests/integration/restart_scene.yaml" > scene.yaml
+  shift
+  for line in "$@"; do printf '  %s\n' "$line" >> scene.yaml; done
+}
+ckdir=restart_sphere_checkpoints
+
+# 1. straight
+scene 2.0e-2
+run straight.log "$nf" "$nd" || { cat straight.log; fail "straight run"; }
+cp restart_sphere_bodies.csv straight_bodies.csv
+cp restart_sphere_momentum.csv straight_momentum.csv
+rm -rf "$ckdir"
+
+# 2. half, stop, restart
+scene 1.0e-2 "checkpoint_interval: 2.5e-3"
+run half.log "$nf" "$nd" || { cat half.log; fail "first half"; }
+n=$(ls "$ckdir"/*.fluid.h5 | wc -l)
+[ "$n" = 2 ] || { ls "$ckdir"; fail "checkpoint_keep 2 left $n fluid halves"; }
+[ -f "$ckdir/restart_sphere_step0000000040.dem.h5" ] || { ls "$ckdir"; fail "no step-40 DEM half"; }
+cp -r "$ckdir" saved_checkpoints
+cp restart_sphere_bodies.csv half_bodies.csv
+cp restart_sphere_momentum.csv half_momentum.csv
+scene 2.0e-2
+run restarted.log "$nf" "$nd" --restart "$ckdir" || { cat restarted.log; fail "restart"; }
+grep -q "restart from .*step0000000040 at step 40" restarted.log || { cat restarted.log; fail "no restart line"; }
+cmp restart_sphere_bodies.csv straight_bodies.csv || fail "body trace after restart differs from the straight run"
+cmp restart_sphere_momentum.csv straight_momentum.csv || fail "momentum audit after restart differs"
+echo "restart at step 40 of 79 ($nf:$nd): body trace and momentum audit identical byte for byte"
+
+# 3. another fluid rank count
+rm -rf "$ckdir" && cp -r saved_checkpoints "$ckdir"
+cp half_bodies.csv restart_sphere_bodies.csv && cp half_momentum.csv restart_sphere_momentum.csv
+nf2=$((nf + 1))
+run ranks.log "$nf2" "$nd" --restart "$ckdir" || { cat ranks.log; fail "restart on $nf2 fluid ranks"; }
+/usr/bin/python3 - straight_bodies.csv restart_sphere_bodies.csv <<'PY'
+import csv, sys
+a = list(csv.reader(open(sys.argv[1]))); b = list(csv.reader(open(sys.argv[2])))
+assert len(a) == len(b), f"{len(a)} rows against {len(b)}"
+worst = 0.0
+for ra, rb in zip(a[1:], b[1:]):
+    for x, y in zip(ra, rb):
+        x, y = float(x), float(y)
+        worst = max(worst, abs(x - y) / max(abs(x), abs(y), 1e-30) if abs(x - y) > 1e-300 else 0.0)
+# Positions, velocities and loads: summation order only (a few ulps growing over 40 steps);
+# near-zero components make the relative figure large, so the test bounds it loosely.
+print(f"restart on another fluid rank count: largest relative difference {worst:.3e}")
+assert worst < 1e-6, worst
+PY
+
+# 4. SIGTERM mid-run
+rm -rf "$ckdir" restart_sphere_bodies.csv restart_sphere_momentum.csv
+scene 2.0e-2
+mpirun -np "$nf" "$fluid" scene.yaml : -np "$nd" "$dem" scene.yaml > term.log 2>&1 &
+mpirun_pid=$!
+for _ in $(seq 600); do
+  [ -f restart_sphere_bodies.csv ] && [ "$(wc -l < restart_sphere_bodies.csv)" -ge 6 ] && break
+  kill -0 "$mpirun_pid" 2> /dev/null || break
+  sleep 0.05
+done
+fluid_pid=$(pgrep -P "$mpirun_pid" -x fluid_app | head -1 || true)
+[ -n "$fluid_pid" ] || { cat term.log; fail "no fluid_app child to signal (the run ended too early)"; }
+kill -TERM "$fluid_pid"
+rc=0
+wait "$mpirun_pid" || rc=$?
+mpirun_pid=""
+[ "$rc" = 0 ] || { cat term.log; fail "exit status $rc after SIGTERM"; }
+grep -q "stopped on request" term.log || { cat term.log; fail "no stop message"; }
+grep -q "continue with: mpirun" term.log || { cat term.log; fail "no restart command"; }
+grep "stopped on request" term.log | head -2
+run term_restart.log "$nf" "$nd" --restart "$ckdir" || { cat term_restart.log; fail "restart after SIGTERM"; }
+cmp restart_sphere_bodies.csv straight_bodies.csv || fail "trace after SIGTERM + restart differs"
+cmp restart_sphere_momentum.csv straight_momentum.csv || fail "audit after SIGTERM + restart differs"
+echo "SIGTERM: checkpoint written, restart identical byte for byte"
+
+if [ "$mode" = quick ]; then
+  echo "PASS: restart ($nf:$nd) in $(echo "$(date +%s.%N) - $started" | bc) s"
+  exit 0
+fi
+
+# 5. refusals, each must end with status != 0 and name the problem
+refuse() {  # refuse NAME REGEX NF ND [RESTART_ARG]
+  local name=$1 regex=$2
+  if run "$name.log" "$3" "$4" --restart "${5:-bad}"; then cat "$name.log"; fail "$name: accepted"; fi
+  grep -q -- "$regex" "$name.log" || { cat "$name.log"; fail "$name: no message matching '$regex'"; }
+  grep -m1 -o -- "$regex.*" "$name.log" | cut -c1-160
+}
+prefix=bad/restart_sphere_step0000000040
+fresh() { rm -rf bad && mkdir bad && cp saved_checkpoints/restart_sphere_step0000000040.* bad/; }
+fresh
+/usr/bin/python3 - "$prefix.fluid.h5" <<'PY'
+import h5py, sys
+with h5py.File(sys.argv[1], "r+") as f:
+    f["populations"][3, 2, 2, 2] = f["populations"][3, 2, 2, 2] * (1 + 1e-15) + 1e-12
+PY
+refuse corrupted "do not match their checksum" "$nf" "$nd"
+fresh && truncate -s 2000 "$prefix.fluid.h5"
+refuse truncated "not a readable checkpoint" "$nf" "$nd"
+fresh && rm "$prefix.dem.h5"
+refuse missing_half "is missing; a restart needs both halves" "$nf" "$nd" "$prefix.fluid.h5"
+fresh && sed -i 's/viscosity: 1.0e-6/viscosity: 1.1e-6/' scene.yaml
+refuse other_scene "written for another scene" "$nf" "$nd"
+scene 2.0e-2
+fresh
+refuse dem_ranks "dem_app ranks, this run has" "$nf" "$((nd + 1))"
+echo "PASS: restart ($nf:$nd) in $(echo "$(date +%s.%N) - $started" | bc) s"
