@@ -13,6 +13,7 @@
 #include "coupler_lib/scene/scene.hpp"
 #include "coupler_lib/scene/shape_catalogue.hpp"
 #include "dem_app/dem_setup.hpp"
+#include "dem_scene_text.hpp"
 
 namespace lbdem {
 namespace {
@@ -86,19 +87,8 @@ std::string write_h5(const std::string& name, const std::vector<Set>& sets) {
   return path;
 }
 
-Scene parse(const std::string& text) {
-  return parse_scene(Section::load_string(text, "t.yaml"), 0);
-}
-
-std::string error_of(const std::string& text) {
-  try {
-    const Scene s = parse(text);
-    validate_dem_setup(make_dem_setup(s, build_scene_shapes(s), false));
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::error_of;
+using test::parse;
 
 TEST(BodiesFileHdf5, SameBodiesAsTheCsvFile) {
   const auto h5 = write_h5(

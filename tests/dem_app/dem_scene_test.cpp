@@ -8,6 +8,7 @@
 #include "dem_app/contact_model.hpp"
 #include "dem_app/dem_setup.hpp"
 #include "dem_app/external_load.hpp"
+#include "dem_scene_text.hpp"
 
 namespace lbdem {
 namespace {
@@ -23,23 +24,9 @@ shapes:
   - {name: cube, kind: cube, edge: 0.01, clump: {method: surface, grid: 3}}
 )";
 
-Scene parse(const std::string& text) {
-  return parse_scene(Section::load_string(text, "t.yaml"), 0);
-}
-
-DemSetup setup_of(const std::string& text) {
-  const Scene s = parse(text);
-  return make_dem_setup(s, build_scene_shapes(s), false);
-}
-
-std::string error_of(const std::string& text) {
-  try {
-    validate_dem_setup(setup_of(text));
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "";
-}
+using test::error_of;
+using test::parse;
+using test::setup_of;
 
 TEST(DemSection, PaperDefaults) {
   const Scene s = parse(kBase + "bodies: []\n");
