@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "validation_support.hpp"
@@ -99,18 +100,30 @@ TEST(ForceTorque, EachRunDeliversExactlyItsLoadsImpulse) {
     engine.run(substeps[run]);
   }
   const auto end = test::all_states(engine);
-  double worst = 0;
+  // Exact up to round-off: each of the N substeps rounds the velocity once, by up to half an
+  // ulp of |v|, so |m dv - J| may reach N eps |v| m (body 0 moves at 0.1 m/s and gains only
+  // ~4e-5 m/s here: about 3e-12 of J). The check is against that bound per body.
+  const long steps = 7 + 3 + 5 + 2 + 6;
+  double worst = 0, worst_bound = 0;
   for (size_t i = 0; i < end.size(); ++i) {
     const auto id = end[i].id;
     const double m = engine.body_mass(id);
-    const Eigen::Vector3d dp = m * (Eigen::Vector3d(end[i].v[0], end[i].v[1], end[i].v[2]) -
-                                    Eigen::Vector3d(start[i].v[0], start[i].v[1], start[i].v[2]));
+    const Eigen::Vector3d v0(start[i].v[0], start[i].v[1], start[i].v[2]);
+    const Eigen::Vector3d v1(end[i].v[0], end[i].v[1], end[i].v[2]);
+    const Eigen::Vector3d dp = m * (v1 - v0);
     const Eigen::Vector3d& j = impulse[static_cast<size_t>(id)];
-    worst = std::max(worst, (dp - j).norm() / j.norm());
+    const double round_off =
+        double(steps) * std::numeric_limits<double>::epsilon() * m * std::max(v0.norm(), v1.norm());
+    const double error = (dp - j).norm() / j.norm(),
+                 bound = (round_off + 1e-13 * j.norm()) / j.norm();
+    if (error / bound > worst / std::max(worst_bound, 1e-300)) {
+      worst = error;
+      worst_bound = bound;
+    }
   }
   test::report("impulse of changing loads, 4 bodies, 5 runs", "m dv vs sum dt N F relative", worst,
-               1e-12, timer.seconds());
-  EXPECT_LT(worst, 1e-12);
+               worst_bound, timer.seconds());
+  EXPECT_LT(worst, worst_bound);
 }
 
 }  // namespace
