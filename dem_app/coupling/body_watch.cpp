@@ -29,7 +29,7 @@ Eigen::Vector3d vec(const double* v) {
 }
 
 std::string diagnose(const std::vector<BodyState>& all, std::int64_t step, double time,
-                     const DemSetup& setup, const BodyWatchLimits& limits) {
+                     const DemSetup& setup, const BodyWatchLimits& limits, bool overlaps) {
   std::ostringstream m;
   m.precision(4);
   const std::string when = " at step " + std::to_string(step) + " (t = " + [&] {
@@ -62,7 +62,7 @@ std::string diagnose(const std::vector<BodyState>& all, std::int64_t step, doubl
         return m.str();
       }
     }
-  if (limits.max_overlap > 0) {
+  if (overlaps && limits.max_overlap > 0) {
     std::vector<BodyPose> poses;
     for (const BodyState& s : all)
       poses.push_back(
@@ -97,11 +97,13 @@ BodyWatchLimits body_watch_limits(const Scene& scene) {
 }
 
 std::string check_bodies(const std::vector<BodyState>& owned, std::int64_t step, double time,
-                         const DemSetup& setup, const BodyWatchLimits& limits, MPI_Comm side) {
+                         const DemSetup& setup, const BodyWatchLimits& limits, bool overlaps,
+                         MPI_Comm side) {
   int rank = 0;
   MPI_Comm_rank(side, &rank);
   const std::vector<BodyState> all = gather_to_root(std::span<const BodyState>(owned), side);
-  std::string message = rank == 0 ? diagnose(all, step, time, setup, limits) : std::string();
+  std::string message =
+      rank == 0 ? diagnose(all, step, time, setup, limits, overlaps) : std::string();
   int n = static_cast<int>(message.size());
   MPI_Bcast(&n, 1, MPI_INT, 0, side);
   message.resize(static_cast<size_t>(n));

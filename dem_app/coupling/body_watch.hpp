@@ -29,8 +29,11 @@ struct BodyWatchLimits {
 BodyWatchLimits body_watch_limits(const Scene& scene);
 
 // Collective over `side`: the diagnosis (what, where, when, likely cause, what to change), the
-// same on every rank, or an empty string when the bodies are fine.
+// same on every rank, or an empty string when the bodies are fine. Non-finite states and speeds
+// are checked always (cheap, every step), the clump overlap search only with `overlaps` (at the
+// steps both programs agree, stop_request.hpp: it costs a search over neighbouring bodies).
 std::string check_bodies(const std::vector<BodyState>& owned, std::int64_t step, double time,
-                         const DemSetup& setup, const BodyWatchLimits& limits, MPI_Comm side);
+                         const DemSetup& setup, const BodyWatchLimits& limits, bool overlaps,
+                         MPI_Comm side);
 
 }  // namespace lbdem

@@ -156,6 +156,7 @@ int run_coupled_dem(AppContext& ctx) {
   bool stopped = false;
   int unstable = 0;  // kFluidUnstable | kBodiesUnstable as both programs agreed
   const BodyWatchLimits limits = body_watch_limits(scene);
+  std::string trouble;  // the bodies' diagnosis, once found
   for (std::int64_t step = first + 1; step <= schedule.steps; ++step) {
     const std::vector<BodyLoad> loads = coupler->receive_loads(step);
     advance(step, loads);
@@ -167,7 +168,12 @@ int run_coupled_dem(AppContext& ctx) {
     coupler->send_states(step, owned);
     progress.update(step, time);
     if (!checkpoints) continue;
-    const std::string trouble = check_bodies(owned, step, time, setup, limits, ctx.side_comm);
+    // Found at any step, reported at the next step both programs agree (the first finding
+    // stays).
+    const bool agree = agreement_at(scene, schedule, step);
+    if (trouble.empty())
+      trouble = check_bodies(owned, step, time, setup, limits, agree, ctx.side_comm);
+    if (!agree) continue;
     const int flags = agree_flags(
         (stop_signal() != 0 ? kStopRequested : 0) | (trouble.empty() ? 0 : kBodiesUnstable), world,
         step);

@@ -201,7 +201,7 @@ int run_typed(AppContext& ctx) {
     // Both programs agree on stop requests and instabilities before the fluid embeds states
     // that may be non-finite.
     int flags = 0;
-    if (checkpoints) {
+    if (checkpoints && agreement_at(scene, schedule, step)) {
       flags = agree_flags(
           (stop_signal() != 0 ? kStopRequested : 0) | (watch.stopped() ? kFluidUnstable : 0), world,
           step);
