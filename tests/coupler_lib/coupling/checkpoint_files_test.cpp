@@ -78,7 +78,7 @@ TEST(CheckpointFiles, PruneKeepsTheNewestOfItsOwnSide) {
   EXPECT_TRUE(fs::exists(f.at("s_step0000000030.fluid.h5")));
 }
 
-TEST(CheckpointFiles, HeaderMismatchesNameWhatToDo) {
+TEST(CheckpointFiles, HeaderMismatchesSayWhatToChange) {
   CheckpointHeader expected;
   expected.side = "dem";
   expected.version = "0.1.0";
