@@ -93,13 +93,10 @@ CheckpointHeader read_checkpoint_header(hid_t file) {
 
 CheckpointHeader read_checkpoint_header(const std::string& path) {
   try {
-    // Quiet: a file that is not HDF5 is reported once, by the message below.
-    H5E_auto2_t func = nullptr;
-    void* data = nullptr;
-    H5Eget_auto2(H5E_DEFAULT, &func, &data);
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-    const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-    H5Eset_auto2(H5E_DEFAULT, func, data);
+    const hid_t id = [&] {
+      const QuietHdf5 quiet;
+      return H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    }();
     const H5Handle file(id, H5Fclose, "opening " + path);
     return read_checkpoint_header(file);
   } catch (const std::exception& e) {

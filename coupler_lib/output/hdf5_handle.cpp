@@ -36,13 +36,10 @@ H5Handle create_parallel_file(const std::string& path, MPI_Comm comm) {
 H5Handle open_parallel_file(const std::string& path, MPI_Comm comm) {
   H5Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "file access list");
   h5_check(H5Pset_fapl_mpio(fapl, comm, MPI_INFO_NULL), "H5Pset_fapl_mpio");
-  // Quiet: a file that is not HDF5 is reported once, by the caller's message.
-  H5E_auto2_t func = nullptr;
-  void* data = nullptr;
-  H5Eget_auto2(H5E_DEFAULT, &func, &data);
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  const hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, fapl);
-  H5Eset_auto2(H5E_DEFAULT, func, data);
+  const hid_t id = [&] {
+    const QuietHdf5 quiet;
+    return H5Fopen(path.c_str(), H5F_ACC_RDONLY, fapl);
+  }();
   return H5Handle(id, H5Fclose, "opening " + path + " (missing, truncated or not HDF5)");
 }
 

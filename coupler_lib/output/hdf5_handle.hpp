@@ -34,6 +34,23 @@ class H5Handle {
 // Throws std::runtime_error naming `what` when an HDF5 call returned a negative status.
 void h5_check(herr_t status, const std::string& what);
 
+// While alive, HDF5 prints no error stack of its own on failed calls: the caller words the
+// message (a file that is missing or not HDF5 is reported once, by that message).
+class QuietHdf5 {
+ public:
+  QuietHdf5() {
+    H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  }
+  ~QuietHdf5() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
+  QuietHdf5(const QuietHdf5&) = delete;
+  QuietHdf5& operator=(const QuietHdf5&) = delete;
+
+ private:
+  H5E_auto2_t func_ = nullptr;
+  void* data_ = nullptr;
+};
+
 // Creates (truncating) `path` for collective writing by every rank of `comm` (MPI-IO).
 H5Handle create_parallel_file(const std::string& path, MPI_Comm comm);
 

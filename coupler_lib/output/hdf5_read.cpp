@@ -9,22 +9,6 @@ namespace lbdem {
 
 namespace {
 
-// HDF5 prints its own error stack on failed calls; the caller words the message instead.
-class QuietHdf5 {
- public:
-  QuietHdf5() {
-    H5Eget_auto2(H5E_DEFAULT, &func_, &data_);
-    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  }
-  ~QuietHdf5() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
-  QuietHdf5(const QuietHdf5&) = delete;
-  QuietHdf5& operator=(const QuietHdf5&) = delete;
-
- private:
-  H5E_auto2_t func_ = nullptr;
-  void* data_ = nullptr;
-};
-
 std::vector<std::string> root_names(hid_t file, const std::string& path) {
   H5G_info_t info;
   h5_check(H5Gget_info(file, &info), path + ": listing the root group");
