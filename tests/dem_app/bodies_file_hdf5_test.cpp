@@ -18,15 +18,7 @@
 namespace lbdem {
 namespace {
 
-const std::string kBase = R"(
-name: t
-time: {end: 0.1}
-dem:
-  box: {lo: [0, 0, 0], hi: [0.1, 0.1, 0.1]}
-shapes:
-  - {name: ball, kind: sphere, diameter: 0.01}
-  - {name: cube, kind: cube, edge: 0.01, clump: {method: surface, grid: 3}}
-)";
+using test::kBodiesFileBase;
 
 // One dataset to write: numbers (rows x width, width 0 for 1-D) or strings.
 struct Set {
@@ -101,8 +93,8 @@ TEST(BodiesFileHdf5, SameBodiesAsTheCsvFile) {
   std::ofstream(csv) << "x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,density,shape\n"
                         "0.02,0.03,0.04,2,0,0,0,0.1,0.2,0.3,1,2,3,2500,cube\n"
                         "0.06,0.07,0.08,1,0,0,1,0,0,-0.5,0,0,0,1200,ball\n";
-  const Scene a = parse(kBase + "bodies:\n  - {file: " + h5 + "}\n");
-  const Scene b = parse(kBase + "bodies:\n  - {file: " + csv.string() + "}\n");
+  const Scene a = parse(kBodiesFileBase + "bodies:\n  - {file: " + h5 + "}\n");
+  const Scene b = parse(kBodiesFileBase + "bodies:\n  - {file: " + csv.string() + "}\n");
   ASSERT_EQ(a.bodies.size(), 2u);
   ASSERT_EQ(b.bodies.size(), 2u);
   for (size_t i = 0; i < 2; ++i) {
@@ -115,20 +107,21 @@ TEST(BodiesFileHdf5, SameBodiesAsTheCsvFile) {
   }
   EXPECT_EQ(a.bodies[0].shape, 1);
   EXPECT_EQ(a.bodies[0].orientation, (std::array<double, 4>{1, 0, 0, 0}));  // normalised
-  EXPECT_EQ(error_of(kBase + "bodies:\n  - {file: " + h5 + "}\n"), "");
+  EXPECT_EQ(error_of(kBodiesFileBase + "bodies:\n  - {file: " + h5 + "}\n"), "");
 }
 
 TEST(BodiesFileHdf5, FormatKeyAndEntryKeys) {
   // Position only, shape and density from the entry; `format: hdf5` whatever the extension.
   const auto f = write_h5("positions.dat", {numbers("position", {0.05, 0.05, 0.05}, 3)});
-  const Scene s =
-      parse(kBase + "bodies:\n  - {file: " + f + ", format: hdf5, shape: ball, density: 3000}\n");
+  const Scene s = parse(kBodiesFileBase + "bodies:\n  - {file: " + f +
+                        ", format: hdf5, shape: ball, density: 3000}\n");
   ASSERT_EQ(s.bodies.size(), 1u);
   EXPECT_EQ(s.bodies[0].density, 3000);
   EXPECT_EQ(s.bodies[0].shape, 0);
   // The same file read as CSV (the default for .dat) is refused as CSV.
-  EXPECT_NE(error_of(kBase + "bodies:\n  - {file: " + f + ", shape: ball, density: 1}\n"), "");
-  EXPECT_NE(error_of(kBase + "bodies:\n  - {file: " + f + ", format: xml, shape: ball}\n")
+  EXPECT_NE(error_of(kBodiesFileBase + "bodies:\n  - {file: " + f + ", shape: ball, density: 1}\n"),
+            "");
+  EXPECT_NE(error_of(kBodiesFileBase + "bodies:\n  - {file: " + f + ", format: xml, shape: ball}\n")
                 .find("bodies[0].format: expected one of {csv, hdf5}"),
             std::string::npos);
 }
@@ -136,11 +129,13 @@ TEST(BodiesFileHdf5, FormatKeyAndEntryKeys) {
 TEST(BodiesFileHdf5, SameChecksAsInlineBodies) {
   const auto overlap =
       write_h5("overlap.h5", {numbers("position", {0.05, 0.05, 0.05, 0.055, 0.05, 0.05}, 3)});
-  EXPECT_NE(error_of(kBase + "bodies:\n  - {file: " + overlap + ", shape: ball, density: 2500}\n")
+  EXPECT_NE(error_of(kBodiesFileBase + "bodies:\n  - {file: " + overlap +
+                     ", shape: ball, density: 2500}\n")
                 .find("overlap"),
             std::string::npos);
   const auto outside = write_h5("outside.h5", {numbers("position", {0.099, 0.05, 0.05}, 3)});
-  EXPECT_NE(error_of(kBase + "bodies:\n  - {file: " + outside + ", shape: ball, density: 2500}\n"),
+  EXPECT_NE(error_of(kBodiesFileBase + "bodies:\n  - {file: " + outside +
+                     ", shape: ball, density: 2500}\n"),
             "");
 }
 
@@ -196,7 +191,7 @@ TEST(BodiesFileHdf5, MalformedFilesNameBodyDatasetAndWhatWasExpected) {
   };
   for (const auto& c : cases) {
     const auto f = write_h5(c.name, c.sets);
-    const auto m = error_of(kBase + "bodies:\n  - {file: " + f + ", " + c.entry + "}\n");
+    const auto m = error_of(kBodiesFileBase + "bodies:\n  - {file: " + f + ", " + c.entry + "}\n");
     EXPECT_NE(m.find(f), std::string::npos) << c.name << ": " << m;
     EXPECT_NE(m.find(c.expect), std::string::npos) << c.name << ": " << m;
     EXPECT_NE(m.find("(bodies file of t.yaml:10: bodies[0].file)"), std::string::npos)
@@ -205,7 +200,8 @@ TEST(BodiesFileHdf5, MalformedFilesNameBodyDatasetAndWhatWasExpected) {
   // Not an HDF5 file at all.
   const auto text = std::filesystem::temp_directory_path() / "lbdem_bodies_file_text.h5";
   std::ofstream(text) << "x,y,z\n0.05,0.05,0.05\n";
-  const auto m = error_of(kBase + "bodies:\n  - {file: " + text.string() + ", shape: ball}\n");
+  const auto m =
+      error_of(kBodiesFileBase + "bodies:\n  - {file: " + text.string() + ", shape: ball}\n");
   EXPECT_NE(m.find("cannot open it as an HDF5 file"), std::string::npos) << m;
 }
 

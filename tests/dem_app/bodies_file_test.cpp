@@ -16,15 +16,7 @@
 namespace lbdem {
 namespace {
 
-const std::string kBase = R"(
-name: t
-time: {end: 0.1}
-dem:
-  box: {lo: [0, 0, 0], hi: [0.1, 0.1, 0.1]}
-shapes:
-  - {name: ball, kind: sphere, diameter: 0.01}
-  - {name: cube, kind: cube, edge: 0.01, clump: {method: surface, grid: 3}}
-)";
+using test::kBodiesFileBase;
 
 // Writes `text` to a fresh file in the temporary folder; returns its absolute path.
 std::string write_file(const std::string& name, const std::string& text) {
@@ -43,7 +35,8 @@ TEST(BodiesFile, ReadsEveryColumnAndTheEntryKeys) {
                             "0.02,0.03,0.04,2,0,0,0,0.1,0.2,0.3,1,2,3\n"
                             "\n"
                             "0.06,0.07,0.08,1,0,0,1,0,0,-0.5,0,0,0\n");
-  const Scene s = parse(kBase + "bodies:\n  - {file: " + f + ", shape: cube, density: 2500}\n");
+  const Scene s =
+      parse(kBodiesFileBase + "bodies:\n  - {file: " + f + ", shape: cube, density: 2500}\n");
   ASSERT_EQ(s.bodies.size(), 2u);
   EXPECT_EQ(s.bodies[0].shape, 1);
   EXPECT_EQ(s.bodies[0].position, (std::array<double, 3>{0.02, 0.03, 0.04}));
@@ -53,12 +46,14 @@ TEST(BodiesFile, ReadsEveryColumnAndTheEntryKeys) {
   EXPECT_NEAR(s.bodies[1].orientation[0], std::sqrt(0.5), 1e-15);
   EXPECT_NEAR(s.bodies[1].orientation[3], std::sqrt(0.5), 1e-15);
   EXPECT_EQ(s.bodies[1].density, 2500);
-  EXPECT_EQ(error_of(kBase + "bodies:\n  - {file: " + f + ", shape: cube, density: 2500}\n"), "");
+  EXPECT_EQ(
+      error_of(kBodiesFileBase + "bodies:\n  - {file: " + f + ", shape: cube, density: 2500}\n"),
+      "");
 }
 
 TEST(BodiesFile, ShapeAndDensityAsColumnsMixWithInlineBodies) {
   const auto f = write_file("columns.csv", "shape,density,z,y,x\nball,1200,0.05,0.05,0.05\n");
-  const Scene s = parse(kBase + "bodies:\n  - {file: " + f +
+  const Scene s = parse(kBodiesFileBase + "bodies:\n  - {file: " + f +
                         "}\n  - {shape: cube, position: [0.02, 0.02, 0.02], density: 3000}\n");
   ASSERT_EQ(s.bodies.size(), 2u);
   EXPECT_EQ(s.bodies[0].shape, 0);
@@ -68,11 +63,13 @@ TEST(BodiesFile, ShapeAndDensityAsColumnsMixWithInlineBodies) {
 
 TEST(BodiesFile, SameValidationAsInlineBodies) {
   const auto overlap = write_file("overlap.csv", "x,y,z\n0.05,0.05,0.05\n0.055,0.05,0.05\n");
-  EXPECT_NE(error_of(kBase + "bodies:\n  - {file: " + overlap + ", shape: ball, density: 2500}\n")
+  EXPECT_NE(error_of(kBodiesFileBase + "bodies:\n  - {file: " + overlap +
+                     ", shape: ball, density: 2500}\n")
                 .find("overlap"),
             std::string::npos);
   const auto outside = write_file("outside.csv", "x,y,z\n0.099,0.05,0.05\n");
-  EXPECT_NE(error_of(kBase + "bodies:\n  - {file: " + outside + ", shape: ball, density: 2500}\n"),
+  EXPECT_NE(error_of(kBodiesFileBase + "bodies:\n  - {file: " + outside +
+                     ", shape: ball, density: 2500}\n"),
             "");
 }
 
@@ -101,11 +98,12 @@ TEST(BodiesFile, MalformedFilesAreRefusedWithFileAndLine) {
   };
   for (const auto& c : cases) {
     const auto f = write_file(c.name, c.text);
-    const auto m = error_of(kBase + "bodies:\n  - {file: " + f + ", " + c.entry + "}\n");
+    const auto m = error_of(kBodiesFileBase + "bodies:\n  - {file: " + f + ", " + c.entry + "}\n");
     EXPECT_NE(m.find(f), std::string::npos) << c.name << ": " << m;
     EXPECT_NE(m.find(c.expect), std::string::npos) << c.name << ": " << m;
   }
-  const auto m = error_of(kBase + "bodies:\n  - {file: /nonexistent/bodies.csv, shape: ball}\n");
+  const auto m =
+      error_of(kBodiesFileBase + "bodies:\n  - {file: /nonexistent/bodies.csv, shape: ball}\n");
   EXPECT_NE(m.find("t.yaml:10: bodies[0].file: cannot open"), std::string::npos) << m;
 }
 

@@ -10,6 +10,17 @@
 
 namespace lbdem::test {
 
+// The scene the bodies-file tests (CSV and HDF5) add their bodies to: a box and two shapes.
+inline const std::string kBodiesFileBase = R"(
+name: t
+time: {end: 0.1}
+dem:
+  box: {lo: [0, 0, 0], hi: [0.1, 0.1, 0.1]}
+shapes:
+  - {name: ball, kind: sphere, diameter: 0.01}
+  - {name: cube, kind: cube, edge: 0.01, clump: {method: surface, grid: 3}}
+)";
+
 inline Scene parse(const std::string& text) {
   return parse_scene(Section::load_string(text, "t.yaml"), 0);
 }
