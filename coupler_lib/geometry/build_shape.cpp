@@ -1,6 +1,7 @@
 #include "coupler_lib/geometry/build_shape.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include "coupler_lib/errors.hpp"
@@ -38,6 +39,14 @@ double clump_reach(const Clump& c, const Eigen::Vector3d& center) {
   return r;
 }
 
+std::string no_solid_left(const ShapeParams& p, double offset) {
+  std::ostringstream s;
+  s << p.where << ": shape '" << p.name << "': the fluid's surface moved inward by " << offset
+    << " m (the band's hydrodynamic radius calibration, fluid.hydrodynamic_radius) leaves no "
+       "solid; use a finer fluid.dx or fluid.hydrodynamic_radius: nominal";
+  return s.str();
+}
+
 }  // namespace
 
 ShapeParams scaled_params(const ShapeParams& p, double factor) {
@@ -45,6 +54,26 @@ ShapeParams scaled_params(const ShapeParams& p, double factor) {
   q.size *= factor;
   for (double& e : q.extents) e *= factor;
   q.scale *= factor;
+  return q;
+}
+
+ShapeParams offset_params(const ShapeParams& p, double offset) {
+  if (offset == 0) return p;
+  ShapeParams q = p;
+  if (p.kind == "stl") {
+    const SolidGeometry solid = make_solid(p);
+    const double s =
+        1 - offset * surface_area(solid.triangles()) / (3 * std::abs(solid.exact_volume()));
+    if (!(s > 0)) throw ShapeError(no_solid_left(p, offset));
+    return scaled_params(p, s);
+  }
+  // size is a diameter or an edge (2 x the largest semi-axis for an ellipsoid); extents are
+  // edges (cube, cuboid) or semi-axes (sphere, ellipsoid).
+  const bool semi_axes = p.kind == "sphere" || p.kind == "ellipsoid";
+  q.size -= 2 * offset;
+  for (double& e : q.extents) e -= semi_axes ? offset : 2 * offset;
+  if (!(*std::min_element(q.extents.begin(), q.extents.end()) > 0))
+    throw ShapeError(no_solid_left(p, offset));
   return q;
 }
 
@@ -126,11 +155,12 @@ Shape build_shape(const ShapeParams& p, double h) {
   }
   shape.clump = translated(std::move(clump), c);
   shape.voxels = translated(std::move(vox), c);
-  if (p.hydrodynamic_scale != 1) {
-    // The fluid's reference lattice is the voxelization of the scaled solid, at the same
-    // spacing, in its own centroid frame; its bounding radius sets which fluid ranks receive
-    // the body.
-    const SolidGeometry scaled_solid = make_solid(scaled_params(p, p.hydrodynamic_scale));
+  if (p.hydrodynamic_scale != 1 || p.hydrodynamic_offset != 0) {
+    // The fluid's reference lattice is the voxelization of the scaled and offset solid, at the
+    // same spacing, in its own centroid frame; its bounding radius sets which fluid ranks
+    // receive the body.
+    const SolidGeometry scaled_solid =
+        make_solid(offset_params(scaled_params(p, p.hydrodynamic_scale), p.hydrodynamic_offset));
     Voxels scaled = voxelize(scaled_solid, h, kVoxelPad);
     const Eigen::Vector3d cs = mass_properties(scaled_solid).centroid;
     shape.reference_volume = mass_properties(scaled).volume;

@@ -33,6 +33,10 @@ struct ShapeParams {
   // The fluid sees the shape scaled by this about its centroid; mass, inertia and contacts keep
   // the true shape (docs/lubrication.md, "Hydrodynamic radius").
   double hydrodynamic_scale = 1;
+  // m: the fluid's shape is then moved inward by this distance normal to its surface (negative:
+  // outward); the calibrated hydrodynamic radius of the HLBM band (docs/method.md, "Hydrodynamic
+  // radius calibration"). Exact for spheres and boxes, see offset_params for the others.
+  double hydrodynamic_offset = 0;
   ClumpParams clump;
   std::string where;  // "scene.yaml:12: shapes[0]", for errors found after parsing
 };

@@ -16,6 +16,15 @@ double signed_volume(const TriangleMesh& mesh) {
   return v / 6.0;
 }
 
+double surface_area(const TriangleMesh& mesh) {
+  double area = 0;
+  for (const auto& t : mesh.triangles) {
+    const auto& a = mesh.vertices[t[0]];
+    area += 0.5 * (mesh.vertices[t[1]] - a).cross(mesh.vertices[t[2]] - a).norm();
+  }
+  return area;
+}
+
 void bounding_box(const TriangleMesh& mesh, Eigen::Vector3d& lo, Eigen::Vector3d& hi) {
   lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
   hi = -lo;

@@ -16,6 +16,9 @@ struct TriangleMesh {
 // Volume enclosed by a closed mesh (divergence theorem); positive for outward normals.
 double signed_volume(const TriangleMesh& mesh);
 
+// Sum of the triangle areas.
+double surface_area(const TriangleMesh& mesh);
+
 // Axis-aligned bounds of the vertices.
 void bounding_box(const TriangleMesh& mesh, Eigen::Vector3d& lo, Eigen::Vector3d& hi);
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "coupler_lib/scene/band_calibration.hpp"
+
 namespace lbdem {
 
 namespace {
@@ -88,6 +90,11 @@ FluidParams parse_fluid(Section& s) {
       "how a node reads a body's smoothed reference porosity: nearest (the paper's nearest "
       "voxel; narrower band, d in steps of 1/19, closer settling speeds: docs/validation.md) "
       "or trilinear (d continuous in the pose; wider band: docs/performance.md)");
+  p.hydrodynamic_radius = s.choice(
+      "hydrodynamic_radius", "calibrated", {"calibrated", "nominal"},
+      "calibrated: the fluid sees each body's surface moved inward by the band's measured "
+      "hydrodynamic-radius excess at this tau and lookup (docs/method.md), nominal: the true "
+      "surface (the paper's construction)");
   for (int d = 0; d < 3; ++d) {
     const double n = p.domain[d] / p.dx;
     p.cells[d] = static_cast<int>(std::lround(n));
@@ -142,6 +149,11 @@ FluidParams parse_fluid(Section& s) {
     p.control.every = std::max(1L, std::lround(p.control.interval / p.units.dt));
   const UnitConverter& u = p.units;
   if (p.tau < UnitLimits{}.min_tau) s.fail("tau", u.check());
+  if (p.hydrodynamic_radius == "calibrated" && !band_radius_excess_cells(p.tau, p.porosity_lookup))
+    s.fail("hydrodynamic_radius",
+           "the band's radius excess is calibrated for tau in " + band_calibration_range() +
+               " with the " + p.porosity_lookup + " lookup; tau is " + std::to_string(p.tau) +
+               ": set hydrodynamic_radius: nominal, or measure it (tools/calibrate_band.py)");
   if (const std::string m = u.check(); !m.empty()) s.fail("characteristic_velocity", m);
   p.output = parse_fluid_output(s, p.units, p.cells);
   s.finish();

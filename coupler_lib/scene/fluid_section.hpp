@@ -9,6 +9,7 @@
 //     tau: 0.8
 //     precision: double               # or float
 //     porosity_lookup: nearest        # (the paper's) or trilinear: how bodies map to the lattice
+//     hydrodynamic_radius: calibrated # or nominal: remove the band's measured radius excess
 //     characteristic_velocity: 0.05   # m/s, expected flow speed: logs Ma and Re, refuses Ma > 0.3
 //     characteristic_length: 0.001    # m, for Re (default: smallest domain edge)
 //     body_force: [0, 0, -9.81]       # m/s^2 acceleration of the fluid (uniform)
@@ -74,6 +75,10 @@ struct FluidParams {
   // How HLBM nodes read a body's reference porosity: nearest | trilinear (fluid_app/hlbm);
   // nearest by default, chosen from the settling numbers of docs/validation.md.
   std::string porosity_lookup = "nearest";
+  // nominal: the fluid sees the body's true surface (the paper's construction); calibrated: the
+  // surface moved inward by the band's measured hydrodynamic-radius excess at this tau
+  // (coupler_lib/scene/band_calibration.hpp, docs/method.md "Hydrodynamic radius calibration").
+  std::string hydrodynamic_radius = "calibrated";
   double characteristic_velocity = 0;  // m/s, 0 = not given
   double characteristic_length = 0;    // m
   std::array<double, 3> body_force{};  // m/s^2, uniform acceleration of the fluid

@@ -48,22 +48,19 @@ void check_memory(const Scene& scene, double memory_bytes) {
 
 // A body the lattice cannot see: thinner than one fluid cell along its thinnest axis of the
 // shape frame. Its porosity would never reach the solid value, so it would feel no fluid.
-void check_resolution(const Scene& scene, const std::vector<Shape>& shapes) {
+// Judged on the true shape, before the shapes are built: a calibrated hydrodynamic radius
+// (fluid.hydrodynamic_radius) moves the fluid's surface inward and would leave no solid.
+void check_resolution(const Scene& scene) {
   if (!scene.coupled()) return;
   const double dx = scene.fluid->dx;
   for (size_t i = 0; i < scene.bodies.size(); ++i) {
     const int k = scene.bodies[i].shape;
-    if (k < 0 || static_cast<size_t>(k) >= shapes.size()) continue;
-    const Shape& sh = shapes[static_cast<size_t>(k)];
-    double thinnest = std::numeric_limits<double>::infinity();
-    for (int d = 0; d < 3; ++d) {
-      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-      for (size_t s = 0; s < sh.clump.centers.size(); ++s) {
-        lo = std::min(lo, sh.clump.centers[s][d] - sh.clump.radii[s]);
-        hi = std::max(hi, sh.clump.centers[s][d] + sh.clump.radii[s]);
-      }
-      thinnest = std::min(thinnest, hi - lo);
-    }
+    if (k < 0 || static_cast<size_t>(k) >= scene.shapes.size()) continue;
+    const ShapeParams& sh = scene.shapes[static_cast<size_t>(k)];
+    // extents: semi-axes for spheres and ellipsoids, edges otherwise.
+    const bool semi_axes = sh.kind == "sphere" || sh.kind == "ellipsoid";
+    const double thinnest =
+        (semi_axes ? 2 : 1) * *std::min_element(sh.extents.begin(), sh.extents.end());
     if (thinnest < dx) {
       std::ostringstream m;
       m << scene.file << ": bodies: body " << i << " (shape '" << sh.name << "') is " << thinnest
@@ -78,8 +75,8 @@ void check_resolution(const Scene& scene, const std::vector<Shape>& shapes) {
 
 void check_whole_scene(const Scene& scene, double memory_bytes) {
   check_memory(scene, memory_bytes);
+  check_resolution(scene);
   const std::vector<Shape> shapes = build_scene_shapes(scene);
-  check_resolution(scene, shapes);
   // Without a box the DEM's own setup refuses the scene with its message.
   if (const auto box = dem_box(scene))
     check_body_placement(scene.file, shapes, scene.bodies, box->lo, box->hi, *scene.dem);

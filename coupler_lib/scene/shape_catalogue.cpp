@@ -4,6 +4,7 @@
 
 #include "coupler_lib/errors.hpp"
 #include "coupler_lib/geometry/build_shape.hpp"
+#include "coupler_lib/scene/band_calibration.hpp"
 
 namespace lbdem {
 
@@ -24,7 +25,11 @@ double shape_voxel_spacing(const ShapeParams& p, const std::optional<FluidParams
 std::vector<Shape> build_scene_shapes(const Scene& scene) {
   std::vector<Shape> out;
   for (size_t i = 0; i < scene.shapes.size(); ++i) {
-    const ShapeParams& p = scene.shapes[i];
+    ShapeParams p = scene.shapes[i];
+    if (scene.fluid && scene.fluid->hydrodynamic_radius == "calibrated")
+      p.hydrodynamic_offset =
+          *band_radius_excess_cells(scene.fluid->tau, scene.fluid->porosity_lookup) *
+          scene.fluid->dx;
     try {
       out.push_back(build_shape(p, shape_voxel_spacing(p, scene.fluid)));
     } catch (const ShapeError& e) {

@@ -16,7 +16,9 @@ namespace lbdem {
 // there is a fluid, else size / 40 (DEM-only scenes need no fluid lattice).
 double shape_voxel_spacing(const ShapeParams& params, const std::optional<FluidParams>& fluid);
 
-// One Shape per entry of scene.shapes, in order. Throws SceneError (the message names the
+// One Shape per entry of scene.shapes, in order. With fluid.hydrodynamic_radius: calibrated,
+// the fluid's voxels are those of the surface moved inward by the band's radius excess
+// (band_calibration.hpp); mass, inertia and clump stay the true shape's. Throws SceneError (the message names the
 // scene file and the shape) for unreadable or invalid shape input.
 std::vector<Shape> build_scene_shapes(const Scene& scene);
 

@@ -16,6 +16,7 @@
 #include "coupler_lib/coupling/schedule.hpp"
 #include "coupler_lib/coupling/stop_request.hpp"
 #include "coupler_lib/coupling/world.hpp"
+#include "coupler_lib/scene/band_calibration.hpp"
 #include "coupler_lib/scene/shape_catalogue.hpp"
 #include "fluid_app/coupling/fluid_checkpoint.hpp"
 #include "fluid_app/coupling/momentum_audit.hpp"
@@ -96,6 +97,12 @@ int run_typed(AppContext& ctx) {
   const int dem_ranks = replay ? 0 : world.peer().size;
 
   const std::vector<Shape> shapes = build_scene_shapes(scene);
+  if (scene.fluid->hydrodynamic_radius == "calibrated")
+    ctx.log->info(
+        "hydrodynamic radius calibrated: the band's excess at tau {} ({} lookup) is {:+.3f} "
+        "cells, so the fluid sees every surface moved inward by that much (docs/method.md)",
+        scene.fluid->tau, scene.fluid->porosity_lookup,
+        *band_radius_excess_cells(scene.fluid->tau, scene.fluid->porosity_lookup));
   FluidRun<T> run(ctx);
   FluidSolver<T>& solver = run.solver();
   int solver_rank = 0;
