@@ -161,17 +161,28 @@ void Lubrication::apply(const AtomView& a) {
     }
     const double reach = ri + rj + law_.cutoff;
     if (dist2 >= reach * reach) continue;  // most listed pairs: inside the skin only
-    const double dist = std::sqrt(dist2);
-    const double c = lubrication_resistance(law_, ri, rj, dist - ri - rj);
+    const double dist = std::sqrt(dist2), gap = dist - ri - rj;
+    const double c = lubrication_resistance(law_, ri, rj, gap);
     if (c == 0 || dist == 0) continue;
-    double un = 0;  // approach speed (v_i - v_j) . n
-    for (int d = 0; d < 3; ++d) {
-      n[d] /= dist;
-      un += (a.v[i][d] - a.v[j][d]) * n[d];
+    Vec3 d{}, du{};
+    double un = 0;  // approach speed (v_i - v_j) . d
+    for (int k = 0; k < 3; ++k) {
+      d[k] = n[k] / dist;
+      du[k] = a.v[i][k] - a.v[j][k];
+      un += du[k] * d[k];
     }
-    for (int d = 0; d < 3; ++d) {
-      a.f[i][d] -= c * un * n[d];
-      if (j < a.nlocal) a.f[j][d] += c * un * n[d];
+    // Sliding and rolling (lubrication_law.hpp): the force on j is the opposite of i's.
+    const PairSlidingLoads s = pair_sliding_loads(pair_sliding_resistance(law_, ri, rj, gap), d, du,
+                                                  {a.omega[i][0], a.omega[i][1], a.omega[i][2]},
+                                                  {a.omega[j][0], a.omega[j][1], a.omega[j][2]});
+    for (int k = 0; k < 3; ++k) {
+      const double f = -c * un * d[k] + s.force1[k];
+      a.f[i][k] += f;
+      a.torque[i][k] += s.torque1[k];
+      if (j < a.nlocal) {
+        a.f[j][k] -= f;
+        a.torque[j][k] += s.torque2[k];
+      }
     }
   }
   for (int i = 0; i < a.nlocal; ++i) {
