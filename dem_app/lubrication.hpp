@@ -46,7 +46,8 @@ class Lubrication {
   bool enabled() const { return law_.viscosity > 0; }
   const LubricationLaw& law() const { return law_; }
 
-  // Adds the correction to f of the local atoms.
+  // Adds the correction to f and torque of the local atoms (normal squeeze film, and the
+  // sliding and rolling parts of pairs and walls: lubrication_law.hpp).
   void apply(const AtomView& a);
 
   long builds() const { return builds_; }              // Verlet-list builds so far
