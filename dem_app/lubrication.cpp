@@ -5,6 +5,14 @@
 
 namespace lbdem {
 
+namespace {
+
+// A cell's body in the search: the body id when all its atoms are of one body (most cells of
+// a dense clump suspension: same-body pairs are the bulk of the candidates), else these.
+constexpr std::int64_t kNoBody = -1, kMixed = -2;
+
+}  // namespace
+
 Lubrication::Lubrication(const LubricationLaw& law, std::vector<std::int64_t> atom_body,
                          std::vector<double> atom_radius, std::vector<LubricationWall> walls,
                          double skin)
@@ -41,9 +49,13 @@ void Lubrication::build_list(const AtomView& a) {
   for (int i = 0; i < a.nall; ++i)
     built_x_[static_cast<size_t>(i)] = {a.x[i][0], a.x[i][1], a.x[i][2]};
 
-  // Bins of one interaction range (largest pair: 2 r_max + h_c + skin): a pair in range lies in
-  // the same or an adjacent bin. (Half-range bins with a 5-bin stencil were slower here: most
-  // of their 125 bins are empty at the clump-sphere densities of dense suspensions.)
+  // Cells of one interaction range (largest pair: 2 r_max + h_c + skin): a pair in range lies
+  // in the same or an adjacent cell, so each cell is paired with itself and 13 of its 26
+  // neighbours (a half stencil: every unordered pair of cells once). The atoms are sorted by
+  // cell into contiguous arrays (position, radius, body), so the pair loops read memory in
+  // order instead of chasing a linked list through LAMMPS's arrays; this, and testing each
+  // pair of atoms once, is what brings the search down to the contacts' own cost
+  // (docs/lubrication.md, "Cost").
   const double range = 2 * max_radius_ + law_.cutoff + skin_;
   std::array<double, 3> lo{}, hi{};
   bool any = false;
@@ -56,8 +68,8 @@ void Lubrication::build_list(const AtomView& a) {
     any = true;
   }
   if (!any) return;
-  // Dense bins as linked lists (head per bin, next per atom); the bin count is capped near the
-  // atom count so sparse systems do not allocate empty space (bins then grow).
+  // The cell count is capped near the atom count so sparse systems do not allocate empty
+  // space (cells then grow).
   std::array<long, 3> n{};
   double size = range;
   for (;;) {
@@ -65,44 +77,76 @@ void Lubrication::build_list(const AtomView& a) {
     if (n[0] * n[1] * n[2] <= 8L * a.nall + 27) break;
     size *= 1.5;
   }
-  auto bin_of = [&](const double* x, int d) {
-    return std::min(n[d] - 1, static_cast<long>((x[d] - lo[d]) / size));
+  auto cell_of = [&](const double* x) {
+    long c = 0;
+    for (int d = 0; d < 3; ++d)
+      c = c * n[d] + std::min(n[d] - 1, static_cast<long>((x[d] - lo[d]) / size));
+    return static_cast<size_t>(c);
   };
-  // Body and radius by atom index, so the inner loop reads contiguous memory.
-  body_.resize(static_cast<size_t>(a.nall));
-  radius_.resize(static_cast<size_t>(a.nall));
+  // Counting sort by cell: cell c holds sorted entries [start_[c], start_[c + 1]).
+  const auto cells = static_cast<size_t>(n[0] * n[1] * n[2]);
+  start_.assign(cells + 1, 0);
+  cell_.resize(static_cast<size_t>(a.nall));
   for (int i = 0; i < a.nall; ++i) {
-    body_[static_cast<size_t>(i)] = atom_body_[static_cast<size_t>(a.tag[i] - 1)];
-    radius_[static_cast<size_t>(i)] = atom_radius_[static_cast<size_t>(a.tag[i] - 1)];
+    const bool takes_part = atom_radius_[static_cast<size_t>(a.tag[i] - 1)] > 0;
+    cell_[static_cast<size_t>(i)] = takes_part ? cell_of(a.x[i]) : cells;
+    if (takes_part) ++start_[cell_[static_cast<size_t>(i)] + 1];
   }
-  head_.assign(static_cast<size_t>(n[0] * n[1] * n[2]), -1);
-  next_.assign(static_cast<size_t>(a.nall), -1);
-  for (int i = a.nall - 1; i >= 0; --i) {
-    if (radius_[static_cast<size_t>(i)] <= 0) continue;
-    const auto b = static_cast<size_t>((bin_of(a.x[i], 0) * n[1] + bin_of(a.x[i], 1)) * n[2] +
-                                       bin_of(a.x[i], 2));
-    next_[static_cast<size_t>(i)] = head_[b];
-    head_[b] = i;
+  for (size_t c = 0; c < cells; ++c) start_[c + 1] += start_[c];
+  sorted_.resize(start_[cells]);
+  fill_ = start_;
+  has_local_.assign(cells, 0);
+  cell_body_.assign(cells, kNoBody);
+  for (int i = 0; i < a.nall; ++i) {
+    const size_t c = cell_[static_cast<size_t>(i)];
+    if (c == cells) continue;
+    const std::int64_t t = a.tag[i] - 1;
+    sorted_[fill_[c]++] = {{a.x[i][0], a.x[i][1], a.x[i][2]},
+                           atom_radius_[static_cast<size_t>(t)],
+                           atom_body_[static_cast<size_t>(t)],
+                           i};
+    if (i < a.nlocal) has_local_[c] = 1;
+    const std::int64_t b = atom_body_[static_cast<size_t>(t)];
+    cell_body_[c] = cell_body_[c] == kNoBody || cell_body_[c] == b ? b : kMixed;
   }
-  for (int i = 0; i < a.nlocal; ++i) {
-    const double ri = radius_[static_cast<size_t>(i)];
-    if (ri <= 0) continue;
-    const long b[3] = {bin_of(a.x[i], 0), bin_of(a.x[i], 1), bin_of(a.x[i], 2)};
-    for (long p = std::max(0L, b[0] - 1); p <= std::min(n[0] - 1, b[0] + 1); ++p)
-      for (long q = std::max(0L, b[1] - 1); q <= std::min(n[1] - 1, b[1] + 1); ++q)
-        for (long r = std::max(0L, b[2] - 1); r <= std::min(n[2] - 1, b[2] + 1); ++r) {
-          for (int j = head_[static_cast<size_t>((p * n[1] + q) * n[2] + r)]; j >= 0;
-               j = next_[static_cast<size_t>(j)]) {
-            if (j < a.nlocal && j <= i) continue;  // local pairs once
-            const auto uj = static_cast<size_t>(j);
-            if (body_[uj] == body_[static_cast<size_t>(i)]) continue;
-            double d2 = 0;
-            for (int d = 0; d < 3; ++d) d2 += (a.x[j][d] - a.x[i][d]) * (a.x[j][d] - a.x[i][d]);
-            const double reach = ri + radius_[uj] + law_.cutoff + skin_;
-            if (d2 < reach * reach) pairs_.push_back({i, j});
-          }
-        }
-  }
+  // Pairs between the entries of cells c and e (c == e: each pair once); at least one atom
+  // local, the local one first.
+  const double extra = law_.cutoff + skin_;
+  auto pair_cells = [&](size_t c, size_t e) {
+    for (size_t p = start_[c]; p < start_[c + 1]; ++p) {
+      const SortedAtom& u = sorted_[p];
+      for (size_t q = c == e ? p + 1 : start_[e]; q < start_[e + 1]; ++q) {
+        const SortedAtom& w = sorted_[q];
+        if (u.body == w.body) continue;
+        const double dx = w.x[0] - u.x[0], dy = w.x[1] - u.x[1], dz = w.x[2] - u.x[2];
+        const double reach = u.radius + w.radius + extra;
+        if (dx * dx + dy * dy + dz * dz >= reach * reach) continue;
+        if (u.index < a.nlocal)
+          pairs_.push_back({u.index, w.index});
+        else if (w.index < a.nlocal)
+          pairs_.push_back({w.index, u.index});
+      }
+    }
+  };
+  // The 13 neighbours of the half stencil: offsets that are lexicographically positive.
+  for (long p = 0; p < n[0]; ++p)
+    for (long q = 0; q < n[1]; ++q)
+      for (long r = 0; r < n[2]; ++r) {
+        const auto c = static_cast<size_t>((p * n[1] + q) * n[2] + r);
+        if (start_[c] == start_[c + 1]) continue;
+        // A cell inside one body has no pair of its own.
+        if (has_local_[c] && cell_body_[c] == kMixed) pair_cells(c, c);
+        for (long dp = 0; dp <= 1; ++dp)
+          for (long dq = dp == 0 ? 0 : -1; dq <= 1; ++dq)
+            for (long dr = dp == 0 && dq == 0 ? 1 : -1; dr <= 1; ++dr) {
+              const long pp = p + dp, qq = q + dq, rr = r + dr;
+              if (pp >= n[0] || qq < 0 || qq >= n[1] || rr < 0 || rr >= n[2]) continue;
+              const auto e = static_cast<size_t>((pp * n[1] + qq) * n[2] + rr);
+              if ((has_local_[c] || has_local_[e]) &&
+                  (cell_body_[c] != cell_body_[e] || cell_body_[c] == kMixed))
+                pair_cells(c, e);
+            }
+      }
 }
 
 void Lubrication::apply(const AtomView& a) {
@@ -117,17 +161,28 @@ void Lubrication::apply(const AtomView& a) {
     }
     const double reach = ri + rj + law_.cutoff;
     if (dist2 >= reach * reach) continue;  // most listed pairs: inside the skin only
-    const double dist = std::sqrt(dist2);
-    const double c = lubrication_resistance(law_, ri, rj, dist - ri - rj);
+    const double dist = std::sqrt(dist2), gap = dist - ri - rj;
+    const double c = lubrication_resistance(law_, ri, rj, gap);
     if (c == 0 || dist == 0) continue;
-    double un = 0;  // approach speed (v_i - v_j) . n
-    for (int d = 0; d < 3; ++d) {
-      n[d] /= dist;
-      un += (a.v[i][d] - a.v[j][d]) * n[d];
+    Vec3 d{}, du{};
+    double un = 0;  // approach speed (v_i - v_j) . d
+    for (int k = 0; k < 3; ++k) {
+      d[k] = n[k] / dist;
+      du[k] = a.v[i][k] - a.v[j][k];
+      un += du[k] * d[k];
     }
-    for (int d = 0; d < 3; ++d) {
-      a.f[i][d] -= c * un * n[d];
-      if (j < a.nlocal) a.f[j][d] += c * un * n[d];
+    // Sliding and rolling (lubrication_law.hpp): the force on j is the opposite of i's.
+    const PairSlidingLoads s = pair_sliding_loads(pair_sliding_resistance(law_, ri, rj, gap), d, du,
+                                                  {a.omega[i][0], a.omega[i][1], a.omega[i][2]},
+                                                  {a.omega[j][0], a.omega[j][1], a.omega[j][2]});
+    for (int k = 0; k < 3; ++k) {
+      const double f = -c * un * d[k] + s.force1[k];
+      a.f[i][k] += f;
+      a.torque[i][k] += s.torque1[k];
+      if (j < a.nlocal) {
+        a.f[j][k] -= f;
+        a.torque[j][k] += s.torque2[k];
+      }
     }
   }
   for (int i = 0; i < a.nlocal; ++i) {

@@ -4,12 +4,13 @@
 // half-step velocities, so the stiff squeeze force is integrated with the contacts' time step.
 //
 // Pairs: clump spheres of different bodies whose surfaces are closer than h_c, found in a
-// Verlet list over local and ghost atoms (bins of one interaction range, rebuilt only when
+// Verlet list over local and ghost atoms (cells of one interaction range, rebuilt only when
 // LAMMPS has re-neighboured or an atom moved more than half the skin), and each local clump
 // sphere against each plane wall. A local atom gets the force of every pair it is in; a pair
 // with a ghost partner is evaluated on both ranks, each for its own atom, so no reverse
 // communication is needed and the result does not depend on the decomposition.
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -45,7 +46,8 @@ class Lubrication {
   bool enabled() const { return law_.viscosity > 0; }
   const LubricationLaw& law() const { return law_; }
 
-  // Adds the correction to f of the local atoms.
+  // Adds the correction to f and torque of the local atoms (normal squeeze film, and the
+  // sliding and rolling parts of pairs and walls: lubrication_law.hpp).
   void apply(const AtomView& a);
 
   long builds() const { return builds_; }              // Verlet-list builds so far
@@ -65,9 +67,18 @@ class Lubrication {
   std::vector<std::int64_t> built_tag_;
   std::vector<std::array<double, 3>> built_x_;
   int built_nlocal_ = -1;
-  std::vector<int> head_, next_;    // bins of the last build
-  std::vector<std::int64_t> body_;  // by atom index, last build
-  std::vector<double> radius_;      // by atom index, last build
+  // Cells of the last build: the taking-part atoms sorted by cell, cell c's in
+  // sorted_[start_[c], start_[c + 1]); scratch reused between builds.
+  struct SortedAtom {
+    std::array<double, 3> x;
+    double radius;
+    std::int64_t body;
+    int index;  // in the LAMMPS arrays
+  };
+  std::vector<SortedAtom> sorted_;
+  std::vector<std::size_t> start_, fill_, cell_;
+  std::vector<char> has_local_;
+  std::vector<std::int64_t> cell_body_;
   long builds_ = 0;
 };
 

@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 // The squeeze-film (lubrication) resistance between two spheres, or a sphere and a plane, that
 // a lattice cannot resolve once the gap is below about one cell (docs/lubrication.md).
 //
@@ -53,5 +54,42 @@ struct SlidingResistance {
   double rotation = 0;     // N m s
 };
 SlidingResistance wall_sliding_resistance(const LubricationLaw& law, double a, double gap);
+
+// Sliding and rolling of two spheres (Jeffrey & Onishi 1984, the near-contact forms of Y^A,
+// Y^B and Y^C; O'Neill & Majumdar 1970): the log-singular parts, each minus its value at h_c
+// and held at h_min. With beta = a2 / a1, L = ln(h_c / max(h, h_min)) and
+//   gA = 4 beta (2 + beta + 2 beta^2) / (15 (1 + beta)^3),
+//   gB(beta) = -beta (4 + beta) / (5 (1 + beta)^2),
+//   gC(beta) = 2 beta / (5 (1 + beta)),  gC12 = 4 beta^2 / (5 (1 + beta)^4),
+// the coefficients are 6 pi mu a1 gA L (translation), 4 pi mu a1^2 gB(beta) L and
+// 4 pi mu a2^2 gB(1/beta) L (coupling of each sphere's spin), 8 pi mu a1^3 gC L,
+// pi mu (a1 + a2)^3 gC12 L and 8 pi mu a2^3 gC(1/beta) L (spin resistances, the middle one
+// the cross term). Equal spheres: gA = 1/6, gB = -1/4, gC = 1/5, gC12 = 1/20; a plane
+// (beta -> infinity): 8/15, -1/5, 2/5, the wall's (above; -1/5 x 4 pi = -2/15 x 6 pi). The
+// asymptotic forms satisfy b1 + b2 = -(a1 + a2) a and c11 + c12 = -(a1 + a2) b1 (a rigid rotation
+// of the touching pair dissipates nothing); the couplings are scaled by s = (a1 + a2) / r and the
+// translation by s^2 (r the centre distance, s -> 1 at contact) so that they hold at the actual
+// distance: angular momentum is then conserved exactly (diag(s, 1, 1) M diag(s, 1, 1) keeps the
+// resistance matrix M positive semi-definite: the power is >= 0).
+struct PairSlidingResistance {
+  double translation = 0;                                 // a, N s/m
+  double coupling1 = 0, coupling2 = 0;                    // b1, b2, N s (negative)
+  double rotation11 = 0, rotation12 = 0, rotation22 = 0;  // c11, c12, c22, N m s
+};
+PairSlidingResistance pair_sliding_resistance(const LubricationLaw& law, double a1, double a2,
+                                              double gap);
+
+// Force on sphere 1 (sphere 2 gets its opposite) and the torques on both from the resistances,
+// with d the unit vector from sphere 1 to sphere 2, du = v1 - v2, w1, w2 the angular velocities:
+//   F1 = -a (I - d d) du - d x (b1 w1 + b2 w2),
+//   T1 = -b1 (du x d) - (I - d d) (c11 w1 + c12 w2),
+//   T2 = -b2 (du x d) - (I - d d) (c12 w1 + c22 w2).
+// Spin about d is left out (not log-singular), like the wall's.
+using Vec3 = std::array<double, 3>;
+struct PairSlidingLoads {
+  Vec3 force1{}, torque1{}, torque2{};
+};
+PairSlidingLoads pair_sliding_loads(const PairSlidingResistance& r, const Vec3& d, const Vec3& du,
+                                    const Vec3& w1, const Vec3& w2);
 
 }  // namespace lbdem

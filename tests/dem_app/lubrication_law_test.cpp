@@ -1,13 +1,16 @@
 // The lubrication law (dem_app/lubrication_law.hpp) and the dem.lubrication scene keys.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <string>
 
 #include "coupler_lib/scene/scene.hpp"
 #include "coupler_lib/scene/shape_catalogue.hpp"
 #include "dem_app/dem_setup.hpp"
+#include "dem_app/lubrication.hpp"
 #include "dem_app/lubrication_law.hpp"
 
 namespace lbdem {
@@ -112,6 +115,124 @@ TEST(LubricationLaw, WallSlidingFollowsTheLogTermsAndDissipates) {
             wall_sliding_resistance(law, a, law.min_gap).coupling);
   EXPECT_GT(s.translation * s.rotation, s.coupling * s.coupling);
   EXPECT_GT(wall_sliding_resistance(law, a, 2e-6).translation, s.translation);
+}
+
+// Jeffrey & Onishi (1984): the log coefficients of Y^A (1/6), Y^B (-1/4) and Y^C (1/5 and the
+// cross term 1/20) for equal spheres, and the wall's 8/15, 2/15, 2/5 as the second sphere grows.
+TEST(LubricationLaw, PairSlidingCoefficientsOfEqualSpheresAndTheWallLimit) {
+  const LubricationLaw law{2e-3, 1e-4, 1e-6};
+  const double a = 1e-3, mu = law.viscosity, h = 1e-5;
+  const double l = std::log(law.cutoff / h), s = 2 * a / (2 * a + h);
+  const PairSlidingResistance r = pair_sliding_resistance(law, a, a, h);
+  EXPECT_NEAR(r.translation, 6 * kPi * mu * a / 6 * l * s * s, 1e-15);
+  EXPECT_NEAR(r.coupling1, -4 * kPi * mu * a * a / 4 * l * s, 1e-18);
+  EXPECT_DOUBLE_EQ(r.coupling2, r.coupling1);
+  EXPECT_NEAR(r.rotation11, 8 * kPi * mu * a * a * a / 5 * l, 1e-21);
+  EXPECT_DOUBLE_EQ(r.rotation22, r.rotation11);
+  EXPECT_NEAR(r.rotation12, kPi * mu * 8 * a * a * a / 20 * l, 1e-21);
+  // A sphere 1e6 times larger: the plane wall's coefficients (coupling: same size, and the sign
+  // of d x w against w x n, lubrication_law.hpp).
+  const SlidingResistance w = wall_sliding_resistance(law, a, h);
+  const PairSlidingResistance big = pair_sliding_resistance(law, a, 1e6 * a, h);
+  EXPECT_NEAR(big.translation / w.translation, 1.0, 1e-5);
+  EXPECT_NEAR(-big.coupling1 / w.coupling, 1.0, 1e-5);
+  EXPECT_NEAR(big.rotation11 / w.rotation, 1.0, 1e-5);
+  // Zero at and beyond h_c; held below h_min and in overlap (the rotations exactly, the
+  // translation and couplings up to the distance factor s).
+  EXPECT_EQ(pair_sliding_resistance(law, a, a, law.cutoff).translation, 0.0);
+  EXPECT_EQ(pair_sliding_resistance(law, a, 2 * a, 2 * law.cutoff).rotation12, 0.0);
+  const PairSlidingResistance at_min = pair_sliding_resistance(law, a, 2 * a, law.min_gap);
+  for (double g : {0.3 * law.min_gap, -1e-6}) {
+    const PairSlidingResistance r2 = pair_sliding_resistance(law, a, 2 * a, g);
+    EXPECT_EQ(r2.rotation11, at_min.rotation11);
+    EXPECT_EQ(r2.rotation12, at_min.rotation12);
+    const double ratio = (3 * a + g) / (3 * a + law.min_gap);  // 1 / s relative to h_min
+    EXPECT_NEAR(r2.translation * ratio * ratio / at_min.translation, 1.0, 1e-13);
+    EXPECT_NEAR(r2.coupling2 * ratio / at_min.coupling2, 1.0, 1e-13);
+  }
+}
+
+// The pair's sliding loads only dissipate, conserve angular momentum about any point
+// (T1 + T2 + (x1 - x2) x F1 = 0 with F2 = -F1), and vanish for a rigid rotation of the pair.
+TEST(LubricationLaw, PairSlidingDissipatesAndConservesAngularMomentum) {
+  const LubricationLaw law{2e-3, 1e-4, 1e-6};
+  const double a1 = 1e-3;
+  std::uint64_t seed = 12345;
+  auto random = [&seed] {  // in [-1, 1)
+    seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<double>(seed >> 11) * 0x1.0p-52 - 1.0;
+  };
+  auto random_vector = [&](double scale) {
+    return Vec3{scale * random(), scale * random(), scale * random()};
+  };
+  for (double beta : {0.1, 0.5, 1.0, 3.0, 40.0})
+    for (double gap : {-2e-6, 5e-7, 1e-5, 6e-5}) {
+      const double a2 = beta * a1, r = a1 + a2 + gap;
+      const PairSlidingResistance res = pair_sliding_resistance(law, a1, a2, gap);
+      for (int trial = 0; trial < 20; ++trial) {
+        Vec3 d = random_vector(1.0);
+        const double norm = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        for (double& x : d) x /= norm;
+        const Vec3 du = random_vector(1e-2), w1 = random_vector(10.0), w2 = random_vector(10.0);
+        const PairSlidingLoads l = pair_sliding_loads(res, d, du, w1, w2);
+        double power = 0, scale = 0;
+        for (int k = 0; k < 3; ++k) {
+          power -= l.force1[k] * du[k] + l.torque1[k] * w1[k] + l.torque2[k] * w2[k];
+          scale += std::abs(l.force1[k] * du[k]) + std::abs(l.torque1[k] * w1[k]) +
+                   std::abs(l.torque2[k] * w2[k]);
+        }
+        EXPECT_GE(power, -1e-12 * scale) << "beta " << beta << " gap " << gap;
+        // x1 - x2 = -r d.
+        const Vec3 moment{-r * (d[1] * l.force1[2] - d[2] * l.force1[1]),
+                          -r * (d[2] * l.force1[0] - d[0] * l.force1[2]),
+                          -r * (d[0] * l.force1[1] - d[1] * l.force1[0])};
+        for (int k = 0; k < 3; ++k) {
+          const double size = std::abs(l.torque1[k]) + std::abs(l.torque2[k]) + std::abs(moment[k]);
+          EXPECT_NEAR(l.torque1[k] + l.torque2[k] + moment[k], 0.0, 1e-12 * size);
+        }
+        // Rigid rotation w of the pair: du = w x (x1 - x2) = -r w x d.
+        const Vec3 rigid{-r * (w1[1] * d[2] - w1[2] * d[1]), -r * (w1[2] * d[0] - w1[0] * d[2]),
+                         -r * (w1[0] * d[1] - w1[1] * d[0])};
+        const PairSlidingLoads z = pair_sliding_loads(res, d, rigid, w1, w1);
+        const PairSlidingLoads ref = pair_sliding_loads(res, d, rigid, w1, Vec3{});
+        for (int k = 0; k < 3; ++k) {
+          EXPECT_NEAR(z.force1[k], 0.0, 1e-12 * std::abs(ref.force1[0]) + 1e-300);
+          EXPECT_NEAR(z.torque1[k], 0.0, 1e-12 * std::abs(ref.torque1[0]) + 1e-300);
+        }
+      }
+    }
+}
+
+// Two clump spheres of different bodies inside h_c, through Lubrication::apply: the forces on
+// the two are opposite and the torques plus the moments of the forces sum to zero.
+TEST(LubricationPairs, NewtonsThirdLawAndAngularMomentum) {
+  const LubricationLaw law{1e-3, 2e-4, 1e-6};
+  const double a1 = 1e-3, a2 = 1.5e-3;
+  Lubrication lub(law, {0, 1}, {a1, a2}, {}, 1e-4);
+  double x[2][3] = {{0.1, 0.2, 0.3},
+                    {0.1 + 0.6 * (a1 + a2 + 5e-5), 0.2 + 0.8 * (a1 + a2 + 5e-5), 0.3}};
+  double v[2][3] = {{0.01, -0.02, 0.005}, {-0.003, 0.004, 0.02}};
+  double w[2][3] = {{3.0, -1.0, 2.0}, {-0.5, 4.0, 1.0}};
+  double f[2][3] = {}, t[2][3] = {};
+  double *xp[2] = {x[0], x[1]}, *vp[2] = {v[0], v[1]}, *wp[2] = {w[0], w[1]}, *fp[2] = {f[0], f[1]},
+         *tp[2] = {t[0], t[1]};
+  const std::int64_t tags[2] = {1, 2};
+  lub.apply({2, 2, tags, xp, vp, fp, wp, tp});
+  ASSERT_EQ(lub.pairs(), 1u);
+  double fmax = 0, lmax = 0;
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_EQ(f[0][k], -f[1][k]);
+    fmax = std::max(fmax, std::abs(f[0][k]));
+  }
+  EXPECT_GT(fmax, 0.0);
+  for (int k = 0; k < 3; ++k) {
+    const int p = (k + 1) % 3, q = (k + 2) % 3;
+    const double total = t[0][k] + t[1][k] + (x[0][p] * f[0][q] - x[0][q] * f[0][p]) +
+                         (x[1][p] * f[1][q] - x[1][q] * f[1][p]);
+    lmax = std::max({lmax, std::abs(t[0][k]), std::abs(t[1][k])});
+    EXPECT_NEAR(total, 0.0, 1e-12 * (lmax + fmax * 0.3));
+  }
+  EXPECT_GT(lmax, 0.0);
 }
 
 TEST(LubricationKeys, OffByDefaultAndAcceptedWhenComplete) {
