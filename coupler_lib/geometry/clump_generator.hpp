@@ -1,5 +1,6 @@
 #pragma once
-// Multi-sphere clumps from a solid (docs/user-guide.md, "Shapes and clumps", for the methods and measured errors).
+// Multi-sphere clumps from a solid (docs/user-guide.md, "Shapes and clumps", for the methods and
+// measured errors).
 //
 // surface: equal spheres centred on the boundary points of a regular grid laid over the
 //   solid eroded by the sphere radius r, so the spheres touch the surface from inside.

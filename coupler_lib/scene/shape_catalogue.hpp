@@ -18,8 +18,8 @@ double shape_voxel_spacing(const ShapeParams& params, const std::optional<FluidP
 
 // One Shape per entry of scene.shapes, in order. With fluid.hydrodynamic_radius: calibrated,
 // the fluid's voxels are those of the surface moved inward by the band's radius excess
-// (band_calibration.hpp); mass, inertia and clump stay the true shape's. Throws SceneError (the message names the
-// scene file and the shape) for unreadable or invalid shape input.
+// (band_calibration.hpp); mass, inertia and clump stay the true shape's. Throws SceneError
+// (the message names the scene file and the shape) for unreadable or invalid shape input.
 std::vector<Shape> build_scene_shapes(const Scene& scene);
 
 }  // namespace lbdem

@@ -1,5 +1,6 @@
 #pragma once
-// The `shapes:` catalogue of a scene: what each body looks like (docs/user-guide.md, "Shapes and clumps").
+// The `shapes:` catalogue of a scene: what each body looks like (docs/user-guide.md, "Shapes and
+// clumps").
 //
 //   shapes:
 //     - name: cube

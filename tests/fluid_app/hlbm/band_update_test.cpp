@@ -2,9 +2,9 @@
 // surrounding growth layer have to be revisited") against a full recomputation.
 #include <gtest/gtest.h>
 
-#include <ctime>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <vector>
 
 #include "tests/fluid_app/hlbm/hlbm_fixtures.hpp"
