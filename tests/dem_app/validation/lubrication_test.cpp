@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <numbers>
 #include <string>
+#include <utility>
 
 #include "dem_app/lubrication_law.hpp"
 #include "validation_support.hpp"
@@ -125,6 +126,19 @@ TEST(Lubrication, TwoSpheresApproachingFollowTheMomentumBalanceAndConserveMoment
 // the correction acting, m dU/dt = -A U + B W and I dW/dt = B U - C W (U along x, W the spin
 // about y, wall below; lubrication_law.hpp), a linear system solved here in closed form. The
 // coupling spins the sphere up in the rolling sense while both decay.
+// X' = K X for X = (U, W) released from (u0, 0), in closed form:
+// exp(K t) = e^{tau t} [cosh(d t) + sinh(d t) / d (K - tau)], tau = tr K / 2.
+struct SlidingSolution {
+  double k11, k12, k21, k22;
+  // (U, W) at time t.
+  std::pair<double, double> at(double t, double u0) const {
+    const double tau = 0.5 * (k11 + k22);
+    const double d = std::sqrt(0.25 * (k11 - k22) * (k11 - k22) + k12 * k21);
+    const double e = std::exp(tau * t), ch = std::cosh(d * t), sh = std::sinh(d * t) / d;
+    return {e * (ch + sh * (k11 - tau)) * u0, e * sh * k21 * u0};
+  }
+};
+
 TEST(Lubrication, SphereSlidingAlongAWallFollowsTheResistanceMatrix) {
   test::WallTimer timer;
   DemSetup setup = test::load_setup(scene());
@@ -137,18 +151,15 @@ TEST(Lubrication, SphereSlidingAlongAWallFollowsTheResistanceMatrix) {
   LammpsEngine engine(MPI_COMM_WORLD, setup);
   const SlidingResistance r = wall_sliding_resistance(law, kRadius, h0);
   const double m = mass(), inertia = 0.4 * m * kRadius * kRadius;
-  // X' = K X, X = (U, W): exp(K t) = e^{tau t} [cosh(d t) + sinh(d t) / d (K - tau)].
-  const double k11 = -r.translation / m, k12 = r.coupling / m, k21 = r.coupling / inertia,
-               k22 = -r.rotation / inertia;
-  const double tau = 0.5 * (k11 + k22), d = std::sqrt(0.25 * (k11 - k22) * (k11 - k22) + k12 * k21);
+  const SlidingSolution exact{-r.translation / m, r.coupling / m, r.coupling / inertia,
+                              -r.rotation / inertia};
   double worst = 0, drift = 0, spin = 0;
   const double dt = setup.params.dt;
   for (long step = 20; step <= 30000; step += 20) {
     engine.run(20);
     const auto s = test::all_states(engine);
     const double t = step * dt;
-    const double e = std::exp(tau * t), c = std::cosh(d * t), sh = std::sinh(d * t) / d;
-    const double u = e * (c + sh * (k11 - tau)) * u0, w = e * sh * k21 * u0;
+    const auto [u, w] = exact.at(t, u0);
     worst = std::max({worst, std::abs(s[0].v[0] - u) / u0, std::abs(s[0].w[1] - w) * kRadius / u0});
     drift = std::max({drift, std::abs(s[0].x[2] - kRadius - h0) / h0, std::abs(s[0].v[1]) / u0});
     spin = s[0].w[1] * kRadius / s[0].v[0];
@@ -185,9 +196,8 @@ TEST(Lubrication, TwoSpheresSlidingPastEachOtherFollowTheResistanceMatrix) {
   LammpsEngine engine(MPI_COMM_WORLD, setup);
   const PairSlidingResistance r = pair_sliding_resistance(law, kRadius, kRadius, h0);
   const double m = mass(), inertia = 0.4 * m * kRadius * kRadius;
-  const double k11 = -2 * r.translation / m, k12 = 2 * r.coupling1 / m,
-               k21 = 2 * r.coupling1 / inertia, k22 = -(r.rotation11 + r.rotation12) / inertia;
-  const double tau = 0.5 * (k11 + k22), d = std::sqrt(0.25 * (k11 - k22) * (k11 - k22) + k12 * k21);
+  const SlidingSolution exact{-2 * r.translation / m, 2 * r.coupling1 / m,
+                              2 * r.coupling1 / inertia, -(r.rotation11 + r.rotation12) / inertia};
   const double r0 = 2 * kRadius + h0, l0 = m * r0 * u0;  // angular momentum about y at start
   double worst = 0, drift = 0, cross = 0, spin = 0, momentum = 0;
   const double dt = setup.params.dt;
@@ -195,8 +205,7 @@ TEST(Lubrication, TwoSpheresSlidingPastEachOtherFollowTheResistanceMatrix) {
     engine.run(100);
     const auto s = test::all_states(engine);
     const double t = step * dt;
-    const double e = std::exp(tau * t), ch = std::cosh(d * t), sh = std::sinh(d * t) / d;
-    const double u = e * (ch + sh * (k11 - tau)) * u0, w = e * sh * k21 * u0;
+    const auto [u, w] = exact.at(t, u0);
     for (int b = 0; b < 2; ++b) {
       const double sign = b == 0 ? 1 : -1;
       worst = std::max(
