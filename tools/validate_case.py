@@ -21,7 +21,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from lbdem import io, references, run  # noqa: E402
+from lbdem import analysis, io, plots, references, run  # noqa: E402
 from lbdem import scene as lbdem_scene  # noqa: E402
 
 RESULTS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "runs", "validation",
@@ -112,11 +112,30 @@ def cmd_peak(args):
           f"centre height {rows[0]['z']:.4g} -> {rows[-1]['z']:.4g} m")
     failed = report(case_name(args), args, "u_max (m/s)", args.reference, result, wall,
                     args.ranks, args.tolerance)
+    compare_curves(args, speeds)
     if i_peak == len(speeds) - 1 or drop < args.min_drop:
         print("FAILED: no peak inside the run (the largest speed is not followed by a decrease "
               "of at least the bound)")
         return 1
     return failed
+
+
+def compare_curves(args, speeds):
+    """The whole u(t) against each measured curve named by --curve (reported, not judged: a
+    digitized figure is good to a few percent), and a figure of them when --plot is given."""
+    t = [s[0] for s in speeds]
+    u = [s[1] for s in speeds]
+    curves = {name: references.reference_curve(name) for name in args.curve}
+    for name, (t_ref, u_ref) in curves.items():
+        d = analysis.curve_difference(t, u, t_ref, u_ref)
+        print(f"u(t) against {name}: {d['n']} points, RMS difference {100 * d['rms']:.2f} % of "
+              f"its peak, largest {100 * d['largest']:+.2f} % at t = {d['t_largest']:.3f} s; "
+              f"with its time origin moved by {1000 * d['shift']:+.0f} ms (best within "
+              f"+-100 ms) RMS {100 * d['rms_shifted']:.2f} %")
+    if args.plot:
+        plots.speed_history_plot(t, u, os.path.basename(args.scene), curves, args.reference,
+                                 args.plot)
+        print(f"u(t) figure: {args.plot}")
 
 
 def cmd_invariance(args):
@@ -324,6 +343,10 @@ def main():
         if name == "peak":
             q.add_argument("--min-drop", type=float, default=0.01,
                            help="least fall of the speed after the peak, relative to it")
+            q.add_argument("--curve", action="append", default=[],
+                           help="a measured u(t) in tools/lbdem/reference_curves to compare "
+                                "the whole run with (repeatable)")
+            q.add_argument("--plot", default="", help="write u(t) with the curves to this PNG")
         if name == "drag":
             q.add_argument("--balance", type=float, default=0.01,
                            help="largest relative difference of the load and rho g L^3")

@@ -58,6 +58,36 @@ def slip_velocity(v_zero_flux, phi):
     return np.asarray(v_zero_flux, float) / (1.0 - phi)
 
 
+def curve_difference(t, u, t_ref, u_ref, max_shift=0.1, shift_steps=81):
+    """How far a computed u(t) lies from a reference curve (e.g. a digitized experiment), in
+    units of the reference's peak |u_ref|: the RMS and the largest difference at the reference's
+    points that lie inside the computed time span (u interpolated linearly there), as given and
+    with the reference's time origin moved by the shift in [-max_shift, max_shift] that makes
+    the RMS smallest (a digitized figure's time origin is uncertain by tens of ms).
+
+    Returns a dict: n (points compared), rms, largest, t_largest, shift, rms_shifted."""
+    t, u = np.asarray(t, float), np.asarray(u, float)
+    t_ref, u_ref = np.asarray(t_ref, float), np.asarray(u_ref, float)
+    peak = np.max(np.abs(u_ref))
+
+    def compare(shift):
+        tr = t_ref + shift
+        inside = (tr >= t[0]) & (tr <= t[-1])
+        if inside.sum() < 2:
+            return None
+        d = (np.interp(tr[inside], t, u) - u_ref[inside]) / peak
+        return d, tr[inside]
+
+    d, tr = compare(0.0)
+    k = int(np.argmax(np.abs(d)))
+    best = min((s for s in np.linspace(-max_shift, max_shift, shift_steps)
+                if compare(s) is not None),
+               key=lambda s: np.sqrt(np.mean(compare(s)[0] ** 2)))
+    return {"n": len(d), "rms": float(np.sqrt(np.mean(d**2))), "largest": float(d[k]),
+            "t_largest": float(tr[k]), "shift": float(best),
+            "rms_shifted": float(np.sqrt(np.mean(compare(best)[0] ** 2)))}
+
+
 def radial_distribution(positions, box, r_max=None, bins=50):
     """g(r) as in the paper: <N_pairs(r, r + dr)> / (N (N - 1) / 2 * shell volume / V), averaged
     over configurations, periodic minimum image (r_max <= L_min / 2). The exact shell volume

@@ -70,3 +70,19 @@ def study_plots(rows, curves, out, reynolds, d, a):
     per_shape_plot(rows, curves, paths[3], "lag", "vacf", r"$t\,u_T / d$",
                    r"VACF of $v_{xy}$", lambda r: d / r["u_T"])
     return paths
+
+
+def speed_history_plot(t, u, label, curves, peak_reference, path):
+    """A body's settling speed against time with measured curves (name -> (t, u)) and the
+    reference peak as a horizontal line."""
+    fig, ax = plt.subplots(figsize=(5.5, 4))
+    ax.plot(t, u, "k-", label=f"this code, {label}")
+    for (name, (t_ref, u_ref)), m in zip(curves.items(), ("o", "s", "^")):
+        ax.plot(t_ref, u_ref, m, mfc="none", label=name)
+    ax.axhline(peak_reference, color="grey", ls=":", label=f"peak, Table II ({peak_reference:g})")
+    ax.set_xlabel("t (s)")
+    ax.set_ylabel("settling speed (m/s)")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=130)
+    plt.close(fig)

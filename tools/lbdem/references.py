@@ -3,6 +3,7 @@
 Every formula cites its source (paper by name).
 """
 import math
+import os
 
 # Sangani & Acrivos 1982, Eq. 60 / Table 1: K = sum_s alpha_s chi^s, chi = (phi / (pi/6))^(1/3).
 _SA_ALPHA = [
@@ -108,3 +109,14 @@ TEN_CATE = {
 
 # Single sphere terminal velocity for the hindered-settling study (Rettinger & Rüde 2017).
 SPHERE_TERMINAL_VELOCITY = 0.048  # m/s, d = 0.35 mm, rho_p = 2500, rho_f = 1000, mu = 1e-3
+
+
+CURVES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "reference_curves")
+
+
+def reference_curve(name):
+    """A measured curve from reference_curves/NAME.csv (its header says where it comes from):
+    two arrays, the first column and the second."""
+    rows = [line.split(",") for line in open(os.path.join(CURVES, name + ".csv"))
+            if line.strip() and not line.startswith("#")][1:]
+    return [float(r[0]) for r in rows], [float(r[1]) for r in rows]

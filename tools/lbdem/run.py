@@ -12,8 +12,10 @@ import time
 
 
 def mpirun():
+    """The launcher. --bind-to none: tools may run several jobs at once, and each mpirun binds
+    its ranks to cores counting from core 0, so concurrent jobs would share the first cores."""
     exe = shutil.which("mpirun") or "mpirun"
-    return [exe, "--oversubscribe", "--allow-run-as-root"]
+    return [exe, "--oversubscribe", "--allow-run-as-root", "--bind-to", "none"]
 
 
 def environment(extra=None):

@@ -160,5 +160,37 @@ class BoxSeparation(unittest.TestCase):
             self.assertEqual(gap <= 0, overlap, dx)
 
 
+
+class CurveDifference(unittest.TestCase):
+    """u(t) against a digitized curve: a known offset, a known time shift."""
+
+    def setUp(self):
+        self.t = np.linspace(0.0, 2.0, 2001)
+        self.u = 0.04 * (1 - np.exp(-self.t / 0.3))
+        self.t_ref = np.linspace(0.1, 1.9, 25)
+
+    def test_a_uniform_offset_is_its_size_in_units_of_the_peak(self):
+        u_ref = 0.04 * (1 - np.exp(-self.t_ref / 0.3)) - 0.0008
+        d = analysis.curve_difference(self.t, self.u, self.t_ref, u_ref)
+        peak = np.max(np.abs(u_ref))
+        self.assertEqual(d["n"], 25)
+        self.assertAlmostEqual(d["rms"], 0.0008 / peak, places=6)
+        self.assertAlmostEqual(d["largest"], 0.0008 / peak, places=6)
+
+    def test_a_time_shift_is_found_and_removed(self):
+        # The reference's clock runs 40 ms late: moving its origin by -40 ms removes the
+        # difference (to the interpolation error of the computed curve).
+        u_ref = 0.04 * (1 - np.exp(-(self.t_ref - 0.04) / 0.3))
+        d = analysis.curve_difference(self.t, self.u, self.t_ref, u_ref)
+        self.assertGreater(d["rms"], 0.01)
+        self.assertAlmostEqual(d["shift"], -0.04, places=6)
+        self.assertLess(d["rms_shifted"], 1e-5)
+
+    def test_only_points_inside_the_run_are_compared(self):
+        d = analysis.curve_difference(self.t[:1001], self.u[:1001], self.t_ref,
+                                      0.04 * (1 - np.exp(-self.t_ref / 0.3)))
+        self.assertEqual(d["n"], int(np.sum(self.t_ref <= 1.0)))
+        self.assertLess(d["rms"], 1e-6)
+
 if __name__ == "__main__":
     unittest.main()
