@@ -14,6 +14,10 @@ that resolution; see README, "Validation").
     validate_case.py rotation --build build --scene S --expect broadside --max-tilt-change 20
     validate_case.py spin     --build build --scene S --tolerance 0.1
     validate_case.py momentum --build build --scene S --ranks 3:2 --tolerance 1e-9
+
+peak --curve NAME [--plot F.png] also compares the whole u(t) with a measured curve in
+tools/lbdem/reference_curves/ (reported, not judged). --no-run judges the trace a run already
+left (e.g. one resumed with --restart); --timeout S stops a run after S wall seconds.
 """
 import argparse
 import math
@@ -62,8 +66,12 @@ def report(case, args, quantity, reference, result, wall, ranks, tolerance):
 
 
 def launch(args, ranks):
-    fr, dr = (int(x) for x in ranks.split(":"))
-    wall, _ = run.run(args.build, args.scene, fr, dr)
+    """Runs the scene (unless --no-run: then the trace already written, e.g. by a run resumed
+    with --restart, is judged and the wall time is unknown, nan)."""
+    wall = math.nan
+    if not getattr(args, "no_run", False):
+        fr, dr = (int(x) for x in ranks.split(":"))
+        wall, _ = run.run(args.build, args.scene, fr, dr, timeout=args.timeout or None)
     return wall, io.read_trace_by_body(io.trace_path(args.scene))
 
 
@@ -284,8 +292,7 @@ def cmd_rotation(args):
 
 def cmd_momentum(args):
     """Momentum audit of a triply periodic run (fluid_app's <name>_momentum.csv)."""
-    fr, dr = (int(x) for x in args.ranks.split(":"))
-    wall, _ = run.run(args.build, args.scene, fr, dr)
+    wall, _ = launch(args, args.ranks)
     trace = io.trace_path(args.scene)
     path = trace[: -len("_bodies.csv")] + "_momentum.csv"
     # From the first coupled step on: the DEM's set-up reports the bodies' starting velocity
@@ -327,6 +334,11 @@ def main():
         q.add_argument("--build", required=True)
         q.add_argument("--scene", required=True)
         q.add_argument("--case", default="")
+        q.add_argument("--timeout", type=float, default=0,
+                       help="wall seconds before the run is stopped (0: no limit)")
+        if name != "invariance":  # compares runs: it has to make them
+            q.add_argument("--no-run", action="store_true",
+                           help="judge the trace (and series) the scene's last run left")
         q.add_argument("--tolerance", type=float, default=0.1)
         if name == "invariance":
             q.add_argument("--ranks-list", nargs="+", default=["1:1", "3:2"])
