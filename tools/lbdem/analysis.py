@@ -78,14 +78,19 @@ def curve_difference(t, u, t_ref, u_ref, max_shift=0.1, shift_steps=81):
         d = (np.interp(tr[inside], t, u) - u_ref[inside]) / peak
         return d, tr[inside]
 
-    d, tr = compare(0.0)
+    at_zero = compare(0.0)
+    if at_zero is None:
+        raise ValueError("the reference curve and the run share fewer than two time points")
+    d, tr = at_zero
     k = int(np.argmax(np.abs(d)))
-    best = min((s for s in np.linspace(-max_shift, max_shift, shift_steps)
-                if compare(s) is not None),
-               key=lambda s: np.sqrt(np.mean(compare(s)[0] ** 2)))
+    rms = {}
+    for s in np.linspace(-max_shift, max_shift, shift_steps):
+        c = compare(s)
+        if c is not None:
+            rms[float(s)] = float(np.sqrt(np.mean(c[0] ** 2)))
+    best = min(rms, key=rms.get)
     return {"n": len(d), "rms": float(np.sqrt(np.mean(d**2))), "largest": float(d[k]),
-            "t_largest": float(tr[k]), "shift": float(best),
-            "rms_shifted": float(np.sqrt(np.mean(compare(best)[0] ** 2)))}
+            "t_largest": float(tr[k]), "shift": best, "rms_shifted": rms[best]}
 
 
 def radial_distribution(positions, box, r_max=None, bins=50):

@@ -117,6 +117,6 @@ CURVES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "reference_cur
 def reference_curve(name):
     """A measured curve from reference_curves/NAME.csv (its header says where it comes from):
     two arrays, the first column and the second."""
-    rows = [line.split(",") for line in open(os.path.join(CURVES, name + ".csv"))
-            if line.strip() and not line.startswith("#")][1:]
+    with open(os.path.join(CURVES, name + ".csv")) as f:
+        rows = [line.split(",") for line in f if line.strip() and not line.startswith("#")][1:]
     return [float(r[0]) for r in rows], [float(r[1]) for r in rows]

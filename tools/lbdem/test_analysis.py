@@ -160,7 +160,6 @@ class BoxSeparation(unittest.TestCase):
             self.assertEqual(gap <= 0, overlap, dx)
 
 
-
 class CurveDifference(unittest.TestCase):
     """u(t) against a digitized curve: a known offset, a known time shift."""
 
