@@ -5,6 +5,9 @@
 #include <limits>
 #include <string>
 
+#include "coupler_lib/errors.hpp"
+#include "coupler_lib/scene/dem_time_step.hpp"
+
 namespace lbdem {
 
 namespace {
@@ -62,6 +65,13 @@ Schedule make_schedule(const Scene& scene, double dt_fluid, double dt_dem) {
   s.output_interval = cadence(scene.coupling.output_interval, s.dt, s.exchange_interval);
   s.checkpoint_interval = cadence(scene.coupling.checkpoint_interval, s.dt, s.exchange_interval);
   return s;
+}
+
+Schedule coupled_schedule(const Scene& scene, const std::vector<Shape>& shapes) {
+  if (!scene.fluid || !scene.dem)
+    throw SceneError(scene.file + ": a coupled run needs both a fluid and a dem section");
+  return make_schedule(scene, scene.fluid->units.dt,
+                       dem_time_step(*scene.dem, shapes, scene.bodies));
 }
 
 }  // namespace lbdem

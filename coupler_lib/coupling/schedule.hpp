@@ -11,7 +11,9 @@
 // The outer step is the fluid step when the scene has a fluid, else the DEM step. Outputs and
 // checkpoints fall on exchange steps, so both programs are at the same time when they write.
 #include <cstdint>
+#include <vector>
 
+#include "coupler_lib/geometry/shape.hpp"
 #include "coupler_lib/scene/scene.hpp"
 
 namespace lbdem {
@@ -47,5 +49,9 @@ int dem_substeps(double dt_fluid, double dt_dem);
 // DEM step asked for (scene.dem->dt or the DEM's own estimate), ignored without a DEM.
 // Throws SceneError when a step is missing or non-positive.
 Schedule make_schedule(const Scene& scene, double dt_fluid, double dt_dem);
+
+// The schedule of a coupled scene, identical in both programs: the fluid step and the DEM step
+// of dem_time_step (coupler_lib/scene/dem_time_step.hpp) for the scene's shapes and bodies.
+Schedule coupled_schedule(const Scene& scene, const std::vector<Shape>& shapes);
 
 }  // namespace lbdem

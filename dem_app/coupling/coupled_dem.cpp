@@ -5,9 +5,8 @@
 #include <memory>
 
 #include "coupler_lib/app/progress.hpp"
+#include "coupler_lib/coupling/coupling_session.hpp"
 #include "coupler_lib/coupling/dem_coupler.hpp"
-#include "coupler_lib/coupling/schedule.hpp"
-#include "coupler_lib/coupling/stop_request.hpp"
 #include "coupler_lib/coupling/world.hpp"
 #include "coupler_lib/scene/scene_fingerprint.hpp"
 #include "coupler_lib/scene/shape_catalogue.hpp"
@@ -48,7 +47,9 @@ int run_coupled_dem(AppContext& ctx) {
   if (ctx.rank == 0) std::filesystem::create_directories(dir);
   setup.lammps_log = (dir / (scene.name + "_lammps.log")).string();
   validate_dem_setup(setup);
-  const Schedule schedule = make_schedule(scene, scene.fluid->units.dt, dem_time_step(setup));
+  CouplingSession session(ctx, scene, coupled_schedule(scene, setup.shapes),
+                          replay ? nullptr : &world);
+  const Schedule& schedule = session.schedule();
   setup.params.dt = schedule.dt_dem;  // an integer number of substeps per fluid step
   if (ctx.rank == 0) {
     ctx.log->info("DEM: {}", describe_engine_inputs(setup));
@@ -69,45 +70,36 @@ int run_coupled_dem(AppContext& ctx) {
     engine.set_extra_force(std::int64_t(id), -rho_f * volume * g);
   }
 
-  // Checkpoints need both programs at the same step; with overlap they are one step apart
-  // (the scene refuses checkpoint_interval there, and stop signals keep their default).
-  const bool checkpoints = !replay && !scene.coupling.overlap;
-  std::string journal;
-  if (checkpoints) {
-    install_stop_handlers();
-    if (ctx.rank == 0) std::filesystem::create_directories(checkpoint_directory(scene));
-    journal =
-        (std::filesystem::path(checkpoint_directory(scene)) / (scene.name + "_dem_journal.h5"))
-            .string();
-  }
+  // The DEM half of a checkpoint is the journal of every exchange up to its step.
+  const std::string journal =
+      session.agrees()
+          ? (std::filesystem::path(checkpoint_directory(scene)) / (scene.name + "_dem_journal.h5"))
+                .string()
+          : std::string();
   std::unique_ptr<DemCoupler> coupler = replay
                                             ? std::make_unique<DemCoupler>(ctx, ctx.cli.replay)
                                             : std::make_unique<DemCoupler>(world, scene, journal);
-  const int fluid_ranks = replay ? 0 : world.peer().size;
 
   // A restart: the checkpoint's step, its trace length, and the replay of its journal.
-  std::int64_t first = 0;
   long long trace_bytes = -1;
   std::unique_ptr<DemCoupler> history;
+  std::string restart_from;
   if (!ctx.cli.restart.empty()) {
-    std::string prefix;
     DemRestart r;
     try {
-      prefix = restart_prefix(ctx.cli.restart);
-      r = read_dem_checkpoint(prefix,
-                              make_checkpoint_header(scene, "dem", 0, 0, fluid_ranks, ctx.size));
+      restart_from = restart_prefix(ctx.cli.restart);
+      r = read_dem_checkpoint(restart_from, session.header(0));
     } catch (const std::runtime_error& e) {
       throw SideError(e.what());
     }
-    first = r.header.step;
+    session.resume(restart_from, r.header.step);
     trace_bytes = r.trace_bytes;
-    remember_checkpoint(prefix);
     SideInfo journal_ctx = ctx;  // the journal is identified by the scene fingerprint
     journal_ctx.scene_hash = scene_fingerprint(scene);
     history = std::make_unique<DemCoupler>(journal_ctx, r.path);
     if (ctx.rank == 0)
       ctx.log->info("restart from {} at step {} (t = {:.6e} s): replaying the DEM's {} steps",
-                    prefix, first, r.header.time, first);
+                    restart_from, session.step(), r.header.time, session.step());
   }
 
   std::unique_ptr<BodySnapshotWriter> snapshots;
@@ -120,25 +112,29 @@ int run_coupled_dem(AppContext& ctx) {
 
   Progress progress(ctx.log, scene.time.progress_interval, scene.time.end);
   std::vector<BodyState> owned = engine.owned_states(0);
-  double dem_s = 0;  // wall time in LAMMPS, for the per-step split reported at the end
-  auto advance = [&](std::int64_t step, const std::vector<BodyLoad>& loads) {
+  session.describe("DEM", std::to_string(schedule.dem_substeps) + " substeps");
+  // n_DEM substeps with the loads held constant; `timed`: part of this run's step split (the
+  // steps a restart replays are not).
+  auto advance = [&](std::int64_t step, const std::vector<BodyLoad>& loads, bool timed) {
     for (const BodyLoad& l : loads)
       engine.set_load(l.id, Eigen::Vector3d(l.f[0], l.f[1], l.f[2]),
                       Eigen::Vector3d(l.t[0], l.t[1], l.t[2]));
-    const auto t = std::chrono::steady_clock::now();
-    engine.run(schedule.dem_substeps);
-    dem_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+    if (timed)
+      session.timed("DEM", [&] { engine.run(schedule.dem_substeps); });
+    else
+      engine.run(schedule.dem_substeps);
     owned = engine.owned_states(step);
   };
   if (history) {
     // Steps 0..first again, fed by the journal, each state checked against it bit for bit.
+    const std::int64_t first = session.step();
     history->send_states(0, owned);
     coupler->journal_states(0, owned);
     const auto replay_start = std::chrono::steady_clock::now();
     for (std::int64_t step = 1; step <= first; ++step) {
       const std::vector<BodyLoad> loads = history->receive_loads(step);
       coupler->journal_loads(step, loads);
-      advance(step, loads);
+      advance(step, loads, false);
       history->send_states(step, owned);
       coupler->journal_states(step, owned);
     }
@@ -151,83 +147,38 @@ int run_coupled_dem(AppContext& ctx) {
     trace->write(0.0, owned, {});
     snapshots->write(owned, 0.0);
   }
-  coupler->send_states(first, owned);
-  std::string checkpoint;  // the last one written
-  bool stopped = false;
-  int unstable = 0;  // kFluidUnstable | kBodiesUnstable as both programs agreed
+  session.on_checkpoint([&](const std::string& prefix, const CheckpointHeader& header) {
+    write_dem_checkpoint(prefix, coupler->flush_journal(), header,
+                         trace ? trace->flushed_bytes() : -1, ctx.side_comm);
+  });
+  coupler->send_states(session.step(), owned);
   const BodyWatchLimits limits = body_watch_limits(scene);
-  std::string trouble;  // the bodies' diagnosis, once found
-  for (std::int64_t step = first + 1; step <= schedule.steps; ++step) {
+  std::string trouble;  // the bodies' diagnosis, once found (the first finding stays)
+  while (session.ongoing()) {
+    const std::int64_t step = session.next_step();
     const std::vector<BodyLoad> loads = coupler->receive_loads(step);
-    advance(step, loads);
-    const double time = double(step) * schedule.dt;
-    if (schedule.output_at(step) && trace) {
+    advance(step, loads, true);
+    const double time = session.time_of(step);
+    if (session.output_at(step) && trace) {
       trace->write(time, owned, loads);
       snapshots->write(owned, time);
     }
     coupler->send_states(step, owned);
     progress.update(step, time);
-    if (!checkpoints) continue;
-    // Found at any step, reported at the next step both programs agree (the first finding
-    // stays).
-    const bool agree = agreement_at(scene, schedule, step);
-    if (trouble.empty())
-      trouble = check_bodies(owned, step, time, setup, limits, agree, ctx.side_comm);
-    if (!agree) continue;
-    const int flags = agree_flags(
-        (stop_signal() != 0 ? kStopRequested : 0) | (trouble.empty() ? 0 : kBodiesUnstable), world,
-        step);
-    unstable = flags & (kFluidUnstable | kBodiesUnstable);
-    if (unstable) {
-      // Both programs stop here; the one that found the problem prints the diagnosis.
-      if (ctx.rank == 0) {
-        if (!trouble.empty())
-          ctx.log->error("{}", trouble);
-        else
-          ctx.log->error(
-              "stopped at step {}: fluid_app found the fluid unstable (its diagnosis "
-              "above)",
-              step);
-        const std::string& last = remembered_checkpoint();
-        ctx.log->error("last good checkpoint: {}",
-                       last.empty() ? std::string("none (set coupling.checkpoint_interval)")
-                                    : last + "; continue after changing the scene with: " +
-                                          restart_command(scene, last, fluid_ranks, ctx.size));
-      }
-      break;
-    }
-    stopped = (flags & kStopRequested) != 0;
-    if (!stopped && !schedule.checkpoint_at(step)) continue;
-    checkpoint = checkpoint_prefix(scene, step);
-    write_dem_checkpoint(checkpoint, coupler->flush_journal(),
-                         make_checkpoint_header(scene, "dem", step, time, fluid_ranks, ctx.size),
-                         trace ? trace->flushed_bytes() : -1, ctx.side_comm);
-    // Older checkpoints go only once both halves of this one exist.
-    wait_for_both(world, step);
-    remember_checkpoint(checkpoint);
-    if (ctx.rank == 0) prune_checkpoints(scene, "dem", scene.coupling.checkpoint_keep);
-    if (stopped) {
-      if (ctx.rank == 0)
-        ctx.log->info(
-            "stopped on request at step {} (t = {:.6e} s); checkpoint: {}; continue with: {}", step,
-            time, checkpoint, restart_command(scene, checkpoint, fluid_ranks, ctx.size));
-      break;
-    }
+    if (session.agrees() && trouble.empty())
+      trouble =
+          check_bodies(owned, step, time, setup, limits, session.agreement_at(step), ctx.side_comm);
+    session.advance(trouble.empty() ? 0 : kBodiesUnstable);
   }
   if (ctx.rank == 0) {
-    if (!stopped && !unstable)
-      ctx.log->info("coupled DEM run finished after {} fluid steps", schedule.steps);
-    const CouplingTimes c = coupler->times();
-    const double n = double(std::max<std::int64_t>(schedule.steps, 1));
-    ctx.log->info(
-        "time per coupled step (DEM rank 0): DEM {:.3e} s ({} substeps), exchange {:.3e} s, "
-        "idle (waiting for fluid_app) {:.3e} s",
-        dem_s / n, schedule.dem_substeps, c.exchange_s() / n, c.idle_s / n);
+    // The diagnosis first: the session's report points at it.
+    if (session.end() == SessionEnd::unstable && !trouble.empty()) ctx.log->error("{}", trouble);
     if (trace) ctx.log->info("bodies: {} and {}", trace->path(), snapshots->xdmf_path());
-    if (replay)
-      ctx.log->info("replay of {}: the states of all {} steps match the recording bit for bit",
-                    ctx.cli.replay, schedule.steps);
   }
+  const int rc = session.finish(coupler->times());
+  if (ctx.rank == 0 && replay && session.end() == SessionEnd::completed)
+    ctx.log->info("replay of {}: the states of all {} steps match the recording bit for bit",
+                  ctx.cli.replay, session.step());
   // The journal served the checkpoints (each holds its own copy up to its step).
   coupler.reset();
   if (ctx.rank == 0 && !journal.empty()) {
@@ -236,7 +187,7 @@ int run_coupled_dem(AppContext& ctx) {
     if (std::filesystem::is_empty(checkpoint_directory(scene), ec))
       std::filesystem::remove(checkpoint_directory(scene), ec);
   }
-  return unstable ? kExitUnstable : 0;
+  return rc;
 }
 
 }  // namespace lbdem

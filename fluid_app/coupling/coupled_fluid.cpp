@@ -1,6 +1,5 @@
 #include "fluid_app/coupling/coupled_fluid.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -12,9 +11,8 @@
 #include <vector>
 
 #include "coupler_lib/coupling/checkpoint_files.hpp"
+#include "coupler_lib/coupling/coupling_session.hpp"
 #include "coupler_lib/coupling/fluid_coupler.hpp"
-#include "coupler_lib/coupling/schedule.hpp"
-#include "coupler_lib/coupling/stop_request.hpp"
 #include "coupler_lib/coupling/world.hpp"
 #include "coupler_lib/scene/band_calibration.hpp"
 #include "coupler_lib/scene/shape_catalogue.hpp"
@@ -90,13 +88,8 @@ int run_typed(AppContext& ctx) {
   World world;
   if (!replay) world = connect(ctx);
 
-  // Checkpoints need both programs at the same step; with overlap they are one step apart
-  // (the scene refuses checkpoint_interval there, and stop signals keep their default).
-  const bool checkpoints = !replay && !scene.coupling.overlap;
-  if (checkpoints) install_stop_handlers();
-  const int dem_ranks = replay ? 0 : world.peer().size;
-
   const std::vector<Shape> shapes = build_scene_shapes(scene);
+  CouplingSession session(ctx, scene, coupled_schedule(scene, shapes), replay ? nullptr : &world);
   if (scene.fluid->hydrodynamic_radius == "calibrated")
     ctx.log->info(
         "hydrodynamic radius calibrated: the band's excess at tau {} ({} lookup) is {:+.3f} "
@@ -112,10 +105,8 @@ int run_typed(AppContext& ctx) {
   if (!ctx.cli.restart.empty()) {
     try {
       const std::string prefix = restart_prefix(ctx.cli.restart);
-      remember_checkpoint(prefix);
-      restart = read_fluid_checkpoint(
-          prefix, make_checkpoint_header(scene, "fluid", 0, 0, ctx.size, dem_ranks), solver,
-          restored);
+      restart = read_fluid_checkpoint(prefix, session.header(0), solver, restored);
+      session.resume(prefix, restart->header.step);
       ctx.log->info("restart from {} at step {} (t = {:.6e} s; written by {} fluid ranks)", prefix,
                     restart->header.step, restart->header.time, restart->header.fluid_ranks);
     } catch (const std::runtime_error& e) {
@@ -148,17 +139,9 @@ int run_typed(AppContext& ctx) {
     ctx.log->info("{}", settling.description);
   }
 
-  // Wall time per part of a coupled step, reported at the end (rank 0's view).
-  using Clock = std::chrono::steady_clock;
-  double lattice_s = 0, bodies_s = 0;
-  auto seconds_since = [](Clock::time_point t) {
-    return std::chrono::duration<double>(Clock::now() - t).count();
-  };
-
   // Triply periodic settling: the momentum audit at the coupling output steps.
-  const Schedule schedule = make_schedule(scene, scene.fluid->units.dt, scene.fluid->units.dt);
   std::unique_ptr<MomentumAudit> audit;
-  if (settling.active && schedule.output_interval > 0) {
+  if (settling.active && session.schedule().output_interval > 0) {
     std::filesystem::path dir(scene.dem->output.directory);
     if (dir.is_relative()) dir = std::filesystem::path(scene.file).parent_path() / dir;
     if (ctx.rank == 0) std::filesystem::create_directories(dir);
@@ -175,7 +158,7 @@ int run_typed(AppContext& ctx) {
   const bool penalty = scene.fluid->loads == LoadMethod::penalization;
 
   StateFeed feed(*coupler, scene.coupling.overlap);
-  const auto& first = feed.start(restart ? restart->header.step : 0);
+  const auto& first = feed.start(session.step());
   if (audit && !restart) audit->write(0, 0.0, solver, first);
   bodies.update(first);
   if (restart)
@@ -184,107 +167,44 @@ int run_typed(AppContext& ctx) {
   else
     run.start();
   // Every checkpoint holds a state that passed the stability check.
-  if (checkpoints) watch.check_also_at([&](long step) { return schedule.checkpoint_at(step); });
-  std::string checkpoint;  // the last one written
-  bool stopped = false;
-  int unstable = 0;  // kFluidUnstable | kBodiesUnstable as both programs agreed
-  while (!run.done()) {
-    auto t = Clock::now();
-    run.step();
-    lattice_s += seconds_since(t);
-    const std::int64_t step = solver.steps();
-    t = Clock::now();
-    const auto loads = penalty
-                           ? bodies.penalty_loads(step)
-                           : bodies.momentum_exchange(
-                                 [&](int i, CellIndex c) { return solver.population(i, c); }, step);
-    bodies_s += seconds_since(t);
-    feed.send(step, loads);
-    if (watch.stopped() && !checkpoints) break;
-    // The audit needs the states of this very step (a brief stop of the overlap).
-    const bool audit_now = audit && schedule.output_at(step);
-    const auto& states = feed.next(step, audit_now);
-    if (audit_now) audit->write(step, double(step) * scene.fluid->units.dt, solver, states);
-    // Both programs agree on stop requests and instabilities before the fluid embeds states
-    // that may be non-finite.
-    int flags = 0;
-    if (checkpoints && agreement_at(scene, schedule, step)) {
-      flags = agree_flags(
-          (stop_signal() != 0 ? kStopRequested : 0) | (watch.stopped() ? kFluidUnstable : 0), world,
-          step);
-      unstable = flags & (kFluidUnstable | kBodiesUnstable);
-      if (unstable) break;
-    }
-    if (feed.fresh()) {
-      t = Clock::now();
-      bodies.update(states);
-      bodies_s += seconds_since(t);
-    }
-    if (!checkpoints) continue;
-    stopped = (flags & kStopRequested) != 0;
-    if (!stopped && !schedule.checkpoint_at(step)) continue;
-    checkpoint = checkpoint_prefix(scene, step);
+  watch.check_also_at([&](long step) { return session.checkpoint_at(step); });
+  session.on_checkpoint([&](const std::string& prefix, const CheckpointHeader& header) {
     std::vector<CoveredRecord> covered;
     for (const auto& m : bodies.covered_memory())
       covered.push_back({solver_rank, m.id, m.covered, m.covered_moment});
     SeriesLengths lengths;
     lengths.series = watch.series_bytes();
     if (audit) lengths.momentum = audit->bytes();
-    write_fluid_checkpoint(
-        checkpoint,
-        make_checkpoint_header(scene, "fluid", step, double(step) * scene.fluid->units.dt, ctx.size,
-                               dem_ranks),
-        solver, covered, lengths);
-    // Older checkpoints go only once both halves of this one exist.
-    wait_for_both(world, step);
-    remember_checkpoint(checkpoint);
-    if (ctx.rank == 0) prune_checkpoints(scene, "fluid", scene.coupling.checkpoint_keep);
-    if (stopped) break;
+    write_fluid_checkpoint(prefix, header, solver, covered, lengths);
+  });
+
+  while (session.ongoing()) {
+    const std::int64_t step = session.next_step();
+    session.timed("lattice", [&] { run.step(); });
+    const auto loads = session.timed("porosity + momentum exchange", [&] {
+      return penalty ? bodies.penalty_loads(step)
+                     : bodies.momentum_exchange(
+                           [&](int i, CellIndex c) { return solver.population(i, c); }, step);
+    });
+    feed.send(step, loads);
+    // The audit needs the states of this very step (a brief stop of the overlap).
+    const bool audit_now = audit && session.output_at(step);
+    const auto& states = feed.next(step, audit_now);
+    if (audit_now) audit->write(step, session.time_of(step), solver, states);
+    // The states are embedded only once both programs found this step sound.
+    session.advance(watch.stopped() ? kFluidUnstable : 0, [&] {
+      if (feed.fresh())
+        session.timed("porosity + momentum exchange", [&] { bodies.update(states); });
+    });
   }
-  if (!watch.stopped() && !unstable) feed.finish(solver.steps());
-  if (const std::int64_t n = solver.steps(); n > 0) {
-    const CouplingTimes c = coupler->times();
-    ctx.log->info(
-        "time per coupled step (fluid rank 0): lattice {:.3e} s, porosity + momentum exchange "
-        "{:.3e} s, exchange {:.3e} s, idle (waiting for dem_app) {:.3e} s",
-        lattice_s / double(n), bodies_s / double(n), c.exchange_s() / double(n),
-        c.idle_s / double(n));
-  }
+  if (session.end() == SessionEnd::completed) feed.finish(session.step());
   const int rc = watch.finish();
-  if (unstable) {
-    // Both programs stop here; the one that found the problem printed the diagnosis.
-    if (ctx.rank == 0) {
-      if (!(unstable & kFluidUnstable))
-        ctx.log->error(
-            "stopped at step {}: dem_app found the bodies unstable (its diagnosis "
-            "above)",
-            solver.steps());
-      const std::string& last = remembered_checkpoint();
-      ctx.log->error("last good checkpoint: {}",
-                     last.empty() ? std::string("none (set coupling.checkpoint_interval)")
-                                  : last + "; continue after changing the scene with: " +
-                                        restart_command(scene, last, ctx.size, dem_ranks));
-    }
-    return kExitUnstable;
-  }
-  if (watch.stopped()) {
-    // The DEM side is waiting for loads that will never come: end the whole job. The
-    // diagnosis and the last good state were written by the stability watch.
-    throw SideError(
-        "the fluid became unstable (diagnosis above, last good state written); stopping dem_app");
-  }
-  if (stopped) {
-    ctx.log->info("stopped on request (signal {}) at step {} (t = {:.6e} s); checkpoint: {}",
-                  stop_signal() != 0 ? std::to_string(stop_signal()) : "on another rank",
-                  solver.steps(), double(solver.steps()) * scene.fluid->units.dt, checkpoint);
-    ctx.log->info("continue with: {}", restart_command(scene, checkpoint, ctx.size, dem_ranks));
-    return 0;
-  }
-  ctx.log->info("coupled fluid run finished after {} steps", solver.steps());
-  if (replay)
+  const int end = session.finish(coupler->times());
+  if (end != 0) return end;
+  if (replay && session.end() == SessionEnd::completed)
     ctx.log->info("replay of {}: the loads of all {} steps match the recording bit for bit",
-                  ctx.cli.replay, solver.steps());
-  return rc;
+                  ctx.cli.replay, session.step());
+  return session.end() == SessionEnd::completed ? rc : 0;
 }
 
 }  // namespace

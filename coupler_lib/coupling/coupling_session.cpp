@@ -1,0 +1,168 @@
+#include "coupler_lib/coupling/coupling_session.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "coupler_lib/errors.hpp"
+
+namespace lbdem {
+
+namespace {
+
+constexpr int kUnstable = kFluidUnstable | kBodiesUnstable;
+
+// This program's own instability flag.
+int own_flag(const SideInfo& side) {
+  return side.side == "fluid" ? kFluidUnstable : kBodiesUnstable;
+}
+
+std::string side_label(const SideInfo& side) {
+  return side.side == "dem" ? "DEM" : side.side;
+}
+
+}  // namespace
+
+CouplingSession::CouplingSession(const SideInfo& side, const Scene& scene, const Schedule& schedule,
+                                 const World* world)
+    : side_(side), scene_(scene), schedule_(schedule), world_(world) {
+  // Checkpoints need both programs at the same step; with overlap they are one step apart
+  // (the scene refuses checkpoint_interval there, and stop signals keep their default).
+  agrees_ = world_ != nullptr && !scene.coupling.overlap;
+  const int peer = world_ ? world_->peer().size : 0;
+  fluid_ranks_ = side.side == "fluid" ? side.size : peer;
+  dem_ranks_ = side.side == "fluid" ? peer : side.size;
+  if (!agrees_) return;
+  install_stop_handlers();
+  if (side.rank == 0) std::filesystem::create_directories(checkpoint_directory(scene));
+}
+
+void CouplingSession::resume(const std::string& prefix, std::int64_t step) {
+  remember_checkpoint(prefix);
+  checkpoint_ = prefix;
+  step_ = first_ = step;
+}
+
+CheckpointHeader CouplingSession::header(std::int64_t step) const {
+  return make_checkpoint_header(scene_, side_.side, step, time_of(step), fluid_ranks_, dem_ranks_);
+}
+
+bool CouplingSession::agreement_at(std::int64_t step) const {
+  return agrees_ && lbdem::agreement_at(scene_, schedule_, step);
+}
+
+void CouplingSession::advance(int flags, const std::function<void()>& accept) {
+  const std::int64_t step = next_step();
+  pending_ |= flags & kUnstable;
+  if (!agrees_) {
+    // Alone or overlapped: nobody to agree with, a local instability ends the run now.
+    step_ = step;
+    if (pending_) {
+      agreed_ = pending_;
+      end_ = SessionEnd::unstable;
+      return;
+    }
+    if (accept) accept();
+    if (step_ == schedule_.steps) end_ = SessionEnd::completed;
+    return;
+  }
+  int agreed = 0;
+  if (agreement_at(step)) {
+    agreed = agree_flags(pending_ | (stop_signal() != 0 ? kStopRequested : 0), *world_, step);
+    pending_ = 0;
+  }
+  step_ = step;
+  if (agreed & kUnstable) {
+    agreed_ = agreed;
+    end_ = SessionEnd::unstable;
+    return;
+  }
+  if (accept) accept();
+  const bool stop = (agreed & kStopRequested) != 0;
+  if (stop || schedule_.checkpoint_at(step)) write_checkpoint(step);
+  if (stop) {
+    agreed_ = agreed;
+    end_ = SessionEnd::stop_requested;
+  } else if (step_ == schedule_.steps) {
+    end_ = SessionEnd::completed;
+  }
+}
+
+void CouplingSession::write_checkpoint(std::int64_t step) {
+  if (!writer_)
+    throw SideError(side_.program + ": a checkpoint is due at step " + std::to_string(step) +
+                    " but this program registered no checkpoint writer");
+  const std::string prefix = checkpoint_prefix(scene_, step);
+  writer_(prefix, header(step));
+  // Older checkpoints go only once both halves of this one exist.
+  wait_for_both(*world_, step);
+  remember_checkpoint(prefix);
+  checkpoint_ = prefix;
+  if (side_.rank == 0) prune_checkpoints(scene_, side_.side, scene_.coupling.checkpoint_keep);
+}
+
+CouplingSession::Part& CouplingSession::part(const std::string& name) {
+  auto it =
+      std::find_if(parts_.begin(), parts_.end(), [&](const Part& p) { return p.name == name; });
+  if (it != parts_.end()) return *it;
+  parts_.push_back(Part{name, {}, 0});
+  return parts_.back();
+}
+
+void CouplingSession::add_time(const std::string& name, double seconds) {
+  part(name).seconds += seconds;
+}
+
+void CouplingSession::describe(const std::string& name, const std::string& note) {
+  part(name).note = note;
+}
+
+std::string CouplingSession::step_split(const CouplingTimes& coupler) const {
+  const double n = double(std::max<std::int64_t>(step_ - first_, 1));
+  const std::string peer = world_ ? world_->peer().program : std::string("the recording");
+  std::string line = "time per coupled step (" + side_label(side_) + " rank 0): ";
+  for (const Part& p : parts_) {
+    line += fmt::format("{} {:.3e} s", p.name, p.seconds / n);
+    if (!p.note.empty()) line += " (" + p.note + ")";
+    line += ", ";
+  }
+  return line + fmt::format("exchange {:.3e} s, idle (waiting for {}) {:.3e} s",
+                            coupler.exchange_s() / n, peer, coupler.idle_s / n);
+}
+
+int CouplingSession::finish(const CouplingTimes& coupler) {
+  if (end_ == SessionEnd::running && step_ >= schedule_.steps) end_ = SessionEnd::completed;
+  const std::string peer = world_ ? world_->peer().program : std::string("the recording");
+  if (end_ == SessionEnd::unstable && world_ && !agrees_) {
+    // Overlapped: the other program waits for packets that will never come; end the job.
+    // The diagnosis and the last good state were written by this program's watch.
+    throw SideError("the " + side_.side +
+                    " became unstable (diagnosis above, last good state written); stopping " +
+                    peer);
+  }
+  const bool lead = side_.rank == 0;
+  const auto& log = side_.log;
+  const std::string& last = remembered_checkpoint();
+  if (lead && end_ == SessionEnd::unstable) {
+    // Both programs stop here; the one that found the problem printed the diagnosis.
+    if (!(agreed_ & own_flag(side_)))
+      log->error("stopped at step {}: {} found the {} unstable (its diagnosis above)", step_, peer,
+                 side_.side == "fluid" ? "bodies" : "fluid");
+    log->error("last good checkpoint: {}",
+               last.empty() ? std::string("none (set coupling.checkpoint_interval)")
+                            : last + "; continue after changing the scene with: " +
+                                  restart_command(scene_, last, fluid_ranks_, dem_ranks_));
+  } else if (lead && end_ == SessionEnd::stop_requested) {
+    log->info("stopped on request (signal {}) at step {} (t = {:.6e} s); checkpoint: {}",
+              stop_signal() != 0 ? std::to_string(stop_signal()) : "on another rank", step_,
+              time_of(step_), checkpoint_);
+    log->info("continue with: {}", restart_command(scene_, checkpoint_, fluid_ranks_, dem_ranks_));
+  } else if (lead) {
+    log->info("coupled {} run finished after {} steps", side_label(side_), step_);
+  }
+  if (lead && step_ > first_) log->info("{}", step_split(coupler));
+  return end_ == SessionEnd::unstable ? kExitUnstable : 0;
+}
+
+}  // namespace lbdem

@@ -1,0 +1,96 @@
+// The coupling session of a program that runs alone (a replay): no agreement, no checkpoints,
+// a local instability ends the run at once. Both sides together, live, are tested by the
+// session_pair MPMD driver (drivers/session_pair.cpp).
+#include "coupler_lib/coupling/coupling_session.hpp"
+
+#include <gtest/gtest.h>
+#include <spdlog/sinks/null_sink.h>
+
+namespace lbdem {
+namespace {
+
+struct Alone : ::testing::Test {
+  Alone() {
+    side.side = "fluid";
+    side.program = "fluid_app";
+    side.log =
+        std::make_shared<spdlog::logger>("test", std::make_shared<spdlog::sinks::null_sink_mt>());
+    schedule.dt = 0.5;
+    schedule.steps = 6;
+    schedule.checkpoint_interval = 2;
+    schedule.output_interval = 3;
+  }
+  SideInfo side;
+  Scene scene;
+  Schedule schedule;
+};
+
+TEST_F(Alone, RunsEveryStepAndNeverCheckpoints) {
+  CouplingSession session(side, scene, schedule, nullptr);
+  EXPECT_FALSE(session.agrees());
+  int checkpoints = 0, accepted = 0;
+  session.on_checkpoint([&](const std::string&, const CheckpointHeader&) { ++checkpoints; });
+  std::vector<std::int64_t> labels;
+  while (session.ongoing()) {
+    labels.push_back(session.next_step());
+    EXPECT_FALSE(session.checkpoint_at(session.next_step()));
+    EXPECT_FALSE(session.agreement_at(session.next_step()));
+    session.advance(0, [&] { ++accepted; });
+  }
+  EXPECT_EQ(labels, (std::vector<std::int64_t>{1, 2, 3, 4, 5, 6}));
+  EXPECT_EQ(accepted, 6);
+  EXPECT_EQ(checkpoints, 0);
+  EXPECT_EQ(session.end(), SessionEnd::completed);
+  EXPECT_EQ(session.finish({}), 0);
+  EXPECT_DOUBLE_EQ(session.time_of(session.step()), 3.0);
+  EXPECT_TRUE(session.output_at(3));
+  EXPECT_FALSE(session.output_at(4));
+}
+
+TEST_F(Alone, LocalInstabilityEndsAtOnceWithoutAcceptingTheStep) {
+  CouplingSession session(side, scene, schedule, nullptr);
+  int accepted = 0;
+  while (session.ongoing())
+    session.advance(session.next_step() == 3 ? kFluidUnstable : 0, [&] { ++accepted; });
+  EXPECT_EQ(session.step(), 3);
+  EXPECT_EQ(accepted, 2);
+  EXPECT_EQ(session.end(), SessionEnd::unstable);
+  EXPECT_EQ(session.agreed_flags(), kFluidUnstable);
+  EXPECT_EQ(session.finish({}), kExitUnstable);
+}
+
+TEST_F(Alone, ResumeContinuesAfterTheCheckpointStep) {
+  CouplingSession session(side, scene, schedule, nullptr);
+  session.resume("out/run_step0000000004", 4);
+  EXPECT_EQ(session.last_checkpoint(), "out/run_step0000000004");
+  std::vector<std::int64_t> labels;
+  while (session.ongoing()) {
+    labels.push_back(session.next_step());
+    session.advance(0);
+  }
+  EXPECT_EQ(labels, (std::vector<std::int64_t>{5, 6}));
+  EXPECT_EQ(session.header(6).step, 6);
+  EXPECT_DOUBLE_EQ(session.header(6).time, 3.0);
+  EXPECT_EQ(session.header(6).side, "fluid");
+}
+
+TEST_F(Alone, TimedReturnsTheValueAndAddsUpParts) {
+  CouplingSession session(side, scene, schedule, nullptr);
+  EXPECT_EQ(session.timed("lattice", [] { return 42; }), 42);
+  session.timed("lattice", [] {});
+  session.add_time("bodies", 1.5);
+  session.describe("bodies", "2 substeps");
+  while (session.ongoing()) session.advance(0);
+  CouplingTimes coupler;
+  coupler.total_s = 0.9;
+  coupler.idle_s = 0.6;
+  const std::string line = session.step_split(coupler);
+  EXPECT_NE(line.find("time per coupled step (fluid rank 0): lattice "), std::string::npos) << line;
+  EXPECT_NE(line.find(", bodies 2.500e-01 s (2 substeps), exchange 5.000e-02 s, idle (waiting for "
+                      "the recording) 1.000e-01 s"),
+            std::string::npos)
+      << line;
+}
+
+}  // namespace
+}  // namespace lbdem
