@@ -24,6 +24,9 @@ import subprocess
 import sys
 import time
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from lbdem import run  # noqa: E402
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BENCH = os.path.join(ROOT, "configs", "bench")
 
@@ -60,12 +63,11 @@ def run_scene(args, name):
     fluid_app = os.path.join(args.build, "fluid_app", "fluid_app")
     dem_app = os.path.join(args.build, "dem_app", "dem_app")
     coupled = not name.startswith(("fluid", "quick_fluid"))
-    cmd = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(args.np_fluid),
-           fluid_app, scene]
+    cmd = run.mpirun() + ["-np", str(args.np_fluid), fluid_app, scene]
     if coupled:
         cmd += [":", "-np", str(args.np_dem), dem_app, scene]
     t0 = time.monotonic()
-    p = subprocess.run(cmd, capture_output=True, text=True, cwd=BENCH)
+    p = subprocess.run(cmd, capture_output=True, text=True, cwd=BENCH, env=run.environment())
     wall = time.monotonic() - t0
     log = p.stdout + p.stderr
     if p.returncode != 0:

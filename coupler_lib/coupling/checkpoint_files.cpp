@@ -111,10 +111,6 @@ void check_restart(const std::string& arg, const Scene& scene, const std::string
   if (!scene.coupled())
     throw std::runtime_error("--restart continues a coupled run; " + scene.file +
                              " is not a coupled scene");
-  if (scene.coupling.overlap)
-    throw std::runtime_error(
-        "--restart needs coupling.overlap: false (checkpoints are written "
-        "only without overlap)");
   const std::string prefix = restart_prefix(arg);
   const std::string path = side == "fluid" ? fluid_half(prefix) : dem_half(prefix);
   const CheckpointHeader found = read_checkpoint_header(path);

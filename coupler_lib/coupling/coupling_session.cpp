@@ -27,9 +27,9 @@ std::string side_label(const SideInfo& side) {
 CouplingSession::CouplingSession(const SideInfo& side, const Scene& scene, const Schedule& schedule,
                                  const World* world)
     : side_(side), scene_(scene), schedule_(schedule), world_(world) {
-  // Checkpoints need both programs at the same step; with overlap they are one step apart
-  // (the scene refuses checkpoint_interval there, and stop signals keep their default).
-  agrees_ = world_ != nullptr && !scene.coupling.overlap;
+  // Live, both programs agree; with coupling.overlap the fluid waits for the states of every
+  // agreement step (StateFeed's sync), so both hold the same step when they agree and write.
+  agrees_ = world_ != nullptr;
   const int peer = world_ ? world_->peer().size : 0;
   fluid_ranks_ = side.side == "fluid" ? side.size : peer;
   dem_ranks_ = side.side == "fluid" ? peer : side.size;
@@ -49,14 +49,14 @@ CheckpointHeader CouplingSession::header(std::int64_t step) const {
 }
 
 bool CouplingSession::agreement_at(std::int64_t step) const {
-  return agrees_ && lbdem::agreement_at(scene_, schedule_, step);
+  return lbdem::agreement_at(scene_, schedule_, step);
 }
 
 void CouplingSession::advance(int flags, const std::function<void()>& accept) {
   const std::int64_t step = next_step();
   pending_ |= flags & kUnstable;
   if (!agrees_) {
-    // Alone or overlapped: nobody to agree with, a local instability ends the run now.
+    // Alone (a replay): nobody to agree with, a local instability ends the run now.
     step_ = step;
     if (pending_) {
       agreed_ = pending_;
@@ -134,13 +134,6 @@ std::string CouplingSession::step_split(const CouplingTimes& coupler) const {
 int CouplingSession::finish(const CouplingTimes& coupler) {
   if (end_ == SessionEnd::running && step_ >= schedule_.steps) end_ = SessionEnd::completed;
   const std::string peer = world_ ? world_->peer().program : std::string("the recording");
-  if (end_ == SessionEnd::unstable && world_ && !agrees_) {
-    // Overlapped: the other program waits for packets that will never come; end the job.
-    // The diagnosis and the last good state were written by this program's watch.
-    throw SideError("the " + side_.side +
-                    " became unstable (diagnosis above, last good state written); stopping " +
-                    peer);
-  }
   const bool lead = side_.rank == 0;
   const auto& log = side_.log;
   const std::string& last = remembered_checkpoint();

@@ -23,9 +23,9 @@
 // both programs wait for each other's half, and older checkpoints are pruned
 // (docs/reliability.md, "Checkpoint and restart").
 //
-// Alone (replay) or with coupling.overlap (the two programs are one step apart, so they have
-// no common step to agree or checkpoint at) there is no agreement: a local instability ends
-// the local run at once.
+// With coupling.overlap the fluid waits for the DEM's states at every agreement step
+// (StateFeed's sync), so both programs hold the same step when they agree and checkpoint.
+// Alone (a replay) there is no agreement: a local instability ends the local run at once.
 #include <chrono>
 #include <cstdint>
 #include <functional>
@@ -56,7 +56,7 @@ class CouplingSession {
       std::function<void(const std::string& prefix, const CheckpointHeader& header)>;
 
   // `world`: the live connection (must outlive the session), nullptr when this program runs
-  // alone from a recording. With agreement (live, no overlap) the stop handlers are installed
+  // alone from a recording. With agreement (live) the stop handlers are installed
   // and the checkpoint folder is created. Collective over this program's ranks.
   CouplingSession(const SideInfo& side, const Scene& scene, const Schedule& schedule,
                   const World* world);
@@ -78,9 +78,10 @@ class CouplingSession {
   // This program's checkpoint header for `step` (a restart checks its half against header(0)).
   CheckpointHeader header(std::int64_t step) const;
 
-  // Whether both programs agree and checkpoint (live, no overlap).
+  // Whether both programs agree and checkpoint (live).
   bool agrees() const { return agrees_; }
-  // Whether `step` is an agreement step (always false without agreement).
+  // Whether `step` is an agreement step. The same steps alone (a replay): an overlapped fluid
+  // waits for the states there, live or replayed, so both see the same sequence of states.
   bool agreement_at(std::int64_t step) const;
   bool output_at(std::int64_t step) const { return schedule_.output_at(step); }
   bool checkpoint_at(std::int64_t step) const { return agrees_ && schedule_.checkpoint_at(step); }

@@ -37,12 +37,6 @@ CouplingParams parse_coupling(Section& s) {
   p.overlap = s.get<bool>("overlap", false,
                           "the two programs compute at the same time, the fluid on body states "
                           "one fluid step older");
-  // A checkpoint holds the state of one step on both sides; with overlap the fluid runs on
-  // states one step older than the DEM's, a pair no checkpoint here describes.
-  if (p.overlap && p.checkpoint_interval > 0)
-    s.fail("checkpoint_interval",
-           "checkpoints need coupling.overlap: false (with overlap the two programs are one "
-           "step apart); set overlap: false or checkpoint_interval: 0");
   s.finish();
   return p;
 }

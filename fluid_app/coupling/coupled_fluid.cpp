@@ -187,9 +187,10 @@ int run_typed(AppContext& ctx) {
                            [&](int i, CellIndex c) { return solver.population(i, c); }, step);
     });
     feed.send(step, loads);
-    // The audit needs the states of this very step (a brief stop of the overlap).
+    // The audit, the agreement and a checkpoint need the states of this very step (a brief
+    // stop of the overlap).
     const bool audit_now = audit && session.output_at(step);
-    const auto& states = feed.next(step, audit_now);
+    const auto& states = feed.next(step, audit_now || session.agreement_at(step));
     if (audit_now) audit->write(step, session.time_of(step), solver, states);
     // The states are embedded only once both programs found this step sound.
     session.advance(watch.stopped() ? kFluidUnstable : 0, [&] {

@@ -34,7 +34,6 @@ TEST_F(Alone, RunsEveryStepAndNeverCheckpoints) {
   while (session.ongoing()) {
     labels.push_back(session.next_step());
     EXPECT_FALSE(session.checkpoint_at(session.next_step()));
-    EXPECT_FALSE(session.agreement_at(session.next_step()));
     session.advance(0, [&] { ++accepted; });
   }
   EXPECT_EQ(labels, (std::vector<std::int64_t>{1, 2, 3, 4, 5, 6}));
@@ -44,6 +43,10 @@ TEST_F(Alone, RunsEveryStepAndNeverCheckpoints) {
   EXPECT_EQ(session.finish({}), 0);
   EXPECT_DOUBLE_EQ(session.time_of(session.step()), 3.0);
   EXPECT_TRUE(session.output_at(3));
+  // The schedule's agreement steps (checkpoint steps and the last step here), alone as live.
+  EXPECT_TRUE(session.agreement_at(4));
+  EXPECT_TRUE(session.agreement_at(6));
+  EXPECT_FALSE(session.agreement_at(5));
   EXPECT_FALSE(session.output_at(4));
 }
 
