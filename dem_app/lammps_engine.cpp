@@ -232,6 +232,14 @@ Eigen::Quaterniond LammpsEngine::user_orientation_of(const BodyRecord& r) const 
   return user_orientation(r.q_lammps, offset_[static_cast<size_t>(r.id)]);
 }
 
+std::int64_t LammpsEngine::local_atoms() const {
+  return lammps_extract_setting(lmp_, "nlocal");
+}
+
+std::int64_t LammpsEngine::ghost_atoms() const {
+  return lammps_extract_setting(lmp_, "nghost");
+}
+
 std::vector<BodyState> LammpsEngine::owned_states(std::int64_t fluid_step) const {
   std::vector<BodyState> out;
   for (const auto& r : owned_records()) {

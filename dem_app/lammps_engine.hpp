@@ -69,6 +69,9 @@ class LammpsEngine {
   std::vector<BodyRecord> owned_records() const;
   // The same as packets, orientation in the shape frame.
   std::vector<BodyState> owned_states(std::int64_t fluid_step) const;
+  // Clump spheres this rank owns and holds as ghosts now.
+  std::int64_t local_atoms() const;
+  std::int64_t ghost_atoms() const;
   Eigen::Quaterniond user_orientation_of(const BodyRecord& r) const;
 
   DemEnergies energies() const;  // collective

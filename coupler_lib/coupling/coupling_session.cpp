@@ -1,11 +1,15 @@
 #include "coupler_lib/coupling/coupling_session.hpp"
 
 #include <spdlog/spdlog.h>
+#include <sys/resource.h>
 
 #include <algorithm>
 #include <filesystem>
 
+#include "coupler_lib/coupling/run_summary.hpp"
 #include "coupler_lib/errors.hpp"
+#include "coupler_lib/output/atomic_file.hpp"
+#include "coupler_lib/scene/scene_fingerprint.hpp"
 
 namespace lbdem {
 
@@ -20,6 +24,26 @@ int own_flag(const SideInfo& side) {
 
 std::string side_label(const SideInfo& side) {
   return side.side == "dem" ? "DEM" : side.side;
+}
+
+const char* end_word(SessionEnd e) {
+  switch (e) {
+    case SessionEnd::running:
+      return "running";
+    case SessionEnd::completed:
+      return "completed";
+    case SessionEnd::stop_requested:
+      return "stop_requested";
+    case SessionEnd::unstable:
+      return "unstable";
+  }
+  return "?";
+}
+
+double max_rss_mib() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return double(u.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
 }
 
 }  // namespace
@@ -114,6 +138,15 @@ void CouplingSession::add_time(const std::string& name, double seconds) {
   part(name).seconds += seconds;
 }
 
+void CouplingSession::count(const std::string& name, double value) {
+  for (Counter& c : counters_)
+    if (c.name == name) {
+      c.value = value;
+      return;
+    }
+  counters_.push_back(Counter{name, value});
+}
+
 void CouplingSession::describe(const std::string& name, const std::string& note) {
   part(name).note = note;
 }
@@ -155,7 +188,59 @@ int CouplingSession::finish(const CouplingTimes& coupler) {
     log->info("coupled {} run finished after {} steps", side_label(side_), step_);
   }
   if (lead && step_ > first_) log->info("{}", step_split(coupler));
+  report_work(coupler);
   return end_ == SessionEnd::unstable ? kExitUnstable : 0;
+}
+
+void CouplingSession::report_work(const CouplingTimes& coupler) {
+  const double n = double(std::max<std::int64_t>(step_ - first_, 1));
+  double busy = 0;
+  for (const Part& p : parts_) busy += p.seconds;
+  std::vector<std::string> names{"busy_s_per_step", "max_rss_mib"};
+  std::vector<double> mine{busy / n, max_rss_mib()};
+  for (const Counter& c : counters_) {
+    names.push_back(c.name);
+    mine.push_back(c.value);
+  }
+  RankTable table = gather_per_rank(names, mine, side_.side_comm);
+  if (side_.rank != 0) return;
+  const std::string label = side_label(side_);
+  for (std::size_t c = 0; c < table.names.size(); ++c) {
+    const auto& v = table.per_rank[c];
+    double sum = 0;
+    for (double x : v) sum += x;
+    side_.log->info("per-rank work ({}, {} ranks): {} min {:.6g} mean {:.6g} max {:.6g}", label,
+                    v.size(), table.names[c], *std::min_element(v.begin(), v.end()),
+                    sum / double(v.size()), *std::max_element(v.begin(), v.end()));
+  }
+  side_.log->info("load imbalance ({}): {:.3f} (max / mean of the busy time per step)", label,
+                  max_over_mean(table.per_rank[0]));
+  RunSummary s;
+  s.program = side_.program;
+  s.side = side_.side;
+  s.scene_file = scene_.file;
+  s.version = LBDEM_VERSION;
+  s.fingerprint = scene_fingerprint(scene_);
+  s.fluid_ranks = fluid_ranks_;
+  s.dem_ranks = dem_ranks_;
+  s.first_step = first_;
+  s.last_step = step_;
+  s.schedule_steps = schedule_.steps;
+  s.dt = schedule_.dt;
+  s.end = end_word(end_);
+  s.exit_status = end_ == SessionEnd::unstable ? kExitUnstable : 0;
+  s.last_checkpoint = remembered_checkpoint();
+  s.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+  for (const Part& p : parts_) s.per_step_s.emplace_back(p.name, p.seconds / n);
+  s.per_step_s.emplace_back("exchange", coupler.exchange_s() / n);
+  s.per_step_s.emplace_back("idle", coupler.idle_s / n);
+  s.ranks = std::move(table);
+  s.imbalance_of = "busy_s_per_step";
+  s.outputs = outputs_;
+  const std::string path = run_summary_path(scene_, side_.side);
+  std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+  write_file_atomically(path, run_summary_json(s));
+  side_.log->info("run summary: {}", path);
 }
 
 }  // namespace lbdem

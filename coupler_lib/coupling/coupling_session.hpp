@@ -110,6 +110,12 @@ class CouplingSession {
   // A note printed after the part's time in the split, e.g. "2 substeps".
   void describe(const std::string& part, const std::string& note);
 
+  // This rank's value of a work counter (cells, bodies, atoms, ...), reported per rank at the
+  // end. Every rank of the program sets the same names in the same order.
+  void count(const std::string& name, double value);
+  // A file this run wrote, listed in the run summary (rank 0's list is written).
+  void output(const std::string& path) { outputs_.push_back(path); }
+
   SessionEnd end() const { return end_; }
   int agreed_flags() const { return agreed_; }  // the flags of the agreement that ended the run
   const std::string& last_checkpoint() const { return checkpoint_; }
@@ -118,13 +124,17 @@ class CouplingSession {
   // (waiting for <peer>) <s> s", per step run in this process (tools/coupled_bench.py reads it).
   std::string step_split(const CouplingTimes& coupler) const;
 
-  // Rank 0 logs how the run ended (with the restart command where one applies) and the time
-  // per step split into the parts timed() measured plus the coupler's exchange and idle time.
-  // Returns the exit status: 0, or kExitUnstable.
+  // Collective over this program's ranks. Rank 0 logs how the run ended (with the restart
+  // command where one applies), the time per step split into the parts timed() measured plus
+  // the coupler's exchange and idle time, and the per-rank work: every counter and the max RSS
+  // as min / mean / max over the ranks, and the load imbalance (max / mean of the busy time,
+  // the timed parts, per step). It writes the run summary (run_summary.hpp) next to the body
+  // trace. Returns the exit status: 0, or kExitUnstable.
   int finish(const CouplingTimes& coupler);
 
  private:
   void write_checkpoint(std::int64_t step);
+  void report_work(const CouplingTimes& coupler);  // collective: log lines and the summary
 
   const SideInfo& side_;
   const Scene& scene_;
@@ -139,6 +149,13 @@ class CouplingSession {
   SessionEnd end_ = SessionEnd::running;
   CheckpointWriter writer_;
   std::string checkpoint_;  // the last one written or restarted from
+  struct Counter {
+    std::string name;
+    double value = 0;
+  };
+  std::vector<Counter> counters_;
+  std::vector<std::string> outputs_;
+  std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
   struct Part {
     std::string name, note;
     double seconds = 0;

@@ -170,6 +170,13 @@ int run_coupled_dem(AppContext& ctx) {
           check_bodies(owned, step, time, setup, limits, session.agreement_at(step), ctx.side_comm);
     session.advance(trouble.empty() ? 0 : kBodiesUnstable);
   }
+  session.count("bodies_owned", double(owned.size()));
+  session.count("atoms", double(engine.local_atoms()));
+  session.count("ghost_atoms", double(engine.ghost_atoms()));
+  if (trace) {
+    session.output(trace->path());
+    session.output(snapshots->xdmf_path());
+  }
   if (ctx.rank == 0) {
     // The diagnosis first: the session's report points at it.
     if (session.end() == SessionEnd::unstable && !trouble.empty()) ctx.log->error("{}", trouble);

@@ -80,6 +80,27 @@ void restore_covered(hlbm::BodyField<T>& bodies, const std::vector<CoveredRecord
   for (const auto& [id, m] : mine) bodies.restore_covered(m);
 }
 
+// This rank's work at the end of the run: its cells, those a body covers (d < 1: the band and
+// the interiors, where the porous kernel and the load sums run) and the bodies in its table.
+template <class T>
+void count_work(CouplingSession& session, const FluidSolver<T>& solver) {
+  const LocalBox& box = solver.box();
+  const PorousField<T>& field = solver.porous();
+  double covered = 0, solid = 0;
+  if (field.active)
+    for (int z = 1; z <= box.n[2]; ++z)
+      for (int y = 1; y <= box.n[1]; ++y)
+        for (int x = 1; x <= box.n[0]; ++x) {
+          const float d = field.d[std::size_t(box.index(x, y, z))];
+          covered += d < 1.0f;
+          solid += d == 0.0f;
+        }
+  session.count("cells", double(box.interior_cells()));
+  session.count("covered_cells", covered);
+  session.count("solid_cells", solid);
+  session.count("bodies_in_table", double(field.bodies.size()));
+}
+
 template <class T>
 int run_typed(AppContext& ctx) {
   const Scene& scene = ctx.scene;
@@ -199,6 +220,7 @@ int run_typed(AppContext& ctx) {
     });
   }
   if (session.end() == SessionEnd::completed) feed.finish(session.step());
+  count_work(session, solver);
   const int rc = watch.finish();
   const int end = session.finish(coupler->times());
   if (end != 0) return end;

@@ -2,9 +2,14 @@
 // a local instability ends the run at once. Both sides together, live, are tested by the
 // session_pair MPMD driver (drivers/session_pair.cpp).
 #include "coupler_lib/coupling/coupling_session.hpp"
+#include "coupler_lib/coupling/run_summary.hpp"
 
 #include <gtest/gtest.h>
 #include <spdlog/sinks/null_sink.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 
 namespace lbdem {
 namespace {
@@ -15,11 +20,17 @@ struct Alone : ::testing::Test {
     side.program = "fluid_app";
     side.log =
         std::make_shared<spdlog::logger>("test", std::make_shared<spdlog::sinks::null_sink_mt>());
+    side.side_comm = MPI_COMM_SELF;
+    dir = std::filesystem::temp_directory_path() / "lbdem_session_test";
+    std::filesystem::create_directories(dir);
+    scene.file = (dir / "alone.yaml").string();
+    scene.name = "alone";
     schedule.dt = 0.5;
     schedule.steps = 6;
     schedule.checkpoint_interval = 2;
     schedule.output_interval = 3;
   }
+  std::filesystem::path dir;
   SideInfo side;
   Scene scene;
   Schedule schedule;
@@ -75,6 +86,32 @@ TEST_F(Alone, ResumeContinuesAfterTheCheckpointStep) {
   EXPECT_EQ(session.header(6).step, 6);
   EXPECT_DOUBLE_EQ(session.header(6).time, 3.0);
   EXPECT_EQ(session.header(6).side, "fluid");
+}
+
+TEST_F(Alone, WritesTheRunSummaryWithCountersAndTheSplit) {
+  CouplingSession session(side, scene, schedule, nullptr);
+  session.count("cells", 4096);
+  session.count("bodies", 3);
+  session.count("bodies", 5);  // set, not added
+  session.output("out/trace.csv");
+  while (session.ongoing()) session.timed("lattice", [&] { session.advance(0); });
+  EXPECT_EQ(session.finish({}), 0);
+  std::ifstream in(run_summary_path(scene, "fluid"));
+  ASSERT_TRUE(in) << run_summary_path(scene, "fluid");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string json = text.str();
+  for (const char* want :
+       {"\"end\": \"completed\"", "\"steps\": {\"first\": 0, \"last\": 6, \"schedule\": 6}",
+        "\"cells\": {\"values\": [4096]", "\"bodies\": {\"values\": [5]", "\"max_rss_mib\"",
+        "\"lattice\": ", "\"idle\": 0", "\"outputs\": [\"out/trace.csv\"]", "\"max_over_mean\": 1"})
+    EXPECT_NE(json.find(want), std::string::npos) << want << "\n" << json;
+}
+
+TEST(RunSummary, MaxOverMeanIsTheLoadImbalance) {
+  EXPECT_DOUBLE_EQ(max_over_mean({1.0, 1.0, 2.0, 0.0}), 2.0);
+  EXPECT_DOUBLE_EQ(max_over_mean({}), 1.0);
+  EXPECT_DOUBLE_EQ(max_over_mean({0.0, 0.0}), 1.0);
 }
 
 TEST_F(Alone, TimedReturnsTheValueAndAddsUpParts) {
