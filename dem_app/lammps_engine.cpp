@@ -136,7 +136,7 @@ void LammpsEngine::build() {
                         -rho_f * volume * to_eigen(setup_.params.gravity));
       }
     set_atom_weights();
-    fetch_atom_loads(false);  // the set-up's force evaluation below applies them too
+    exchange_atom_loads(true, {});  // the set-up's force evaluation below applies them too
     lammps_set_fix_external_callback(
         lmp_, "ext", callback_for<CallbackContext>(static_cast<FixExternalFnPtr>(nullptr)),
         &callback_);
@@ -214,14 +214,18 @@ void LammpsEngine::set_atom_weights() {
   }
 }
 
-void LammpsEngine::fetch_atom_loads(bool kick) {
+void LammpsEngine::exchange_atom_loads(bool fetch, LoadRun run) {
   const int nlocal = lammps_extract_setting(lmp_, "nlocal");
   const auto* mol = static_cast<const LammpsTag*>(lammps_extract_atom(lmp_, "molecule"));
   std::vector<std::int64_t> bodies;
-  for (int i = 0; i < nlocal; ++i) bodies.push_back(static_cast<std::int64_t>(mol[i]) - 1);
+  if (fetch)
+    for (int i = 0; i < nlocal; ++i) bodies.push_back(static_cast<std::int64_t>(mol[i]) - 1);
   std::sort(bodies.begin(), bodies.end());
   bodies.erase(std::unique(bodies.begin(), bodies.end()), bodies.end());
-  const std::vector<AppliedLoad> loads = fetch_loads(bodies, table_, kick, load_comm_, traffic_);
+  const std::vector<AppliedLoad> loads =
+      exchange_loads(pending_, bodies, table_, run, load_comm_, traffic_);
+  pending_.clear();
+  if (!fetch) return;
   auto** columns = static_cast<double**>(lammps_extract_atom(lmp_, kLoadArray));
   for (int i = 0; i < nlocal; ++i) {
     const auto at = std::lower_bound(bodies.begin(), bodies.end(), mol[i] - 1) - bodies.begin();
@@ -233,15 +237,10 @@ void LammpsEngine::run(long substeps) {
   if (setup_.external_loads) {
     // Loads set since the last run go to their homes; the spheres held here get their
     // bodies' loads in per-atom columns, which LAMMPS moves with an atom changing rank.
-    deliver_loads(pending_, table_, load_comm_, traffic_);
-    pending_.clear();
+    exchange_atom_loads(substeps > 0, {substeps > 0, substeps >= 2});
+    if (substeps > 0) loads_.begin_run(substeps);
   }
   if (substeps <= 0) return;
-  if (setup_.external_loads) {
-    table_.begin_run();
-    fetch_atom_loads(substeps >= 2);
-    loads_.begin_run(substeps);
-  }
   command("run " + std::to_string(substeps) + " pre no post no");
 }
 

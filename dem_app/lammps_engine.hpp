@@ -81,9 +81,9 @@ class LammpsEngine {
  private:
   void command(const std::string& c) const;
   void build();
-  // Writes, for each local atom, what the current run applies to its body (fetched from the
-  // homes); collective.
-  void fetch_atom_loads(bool kick);
+  // Sends the pending loads to their homes and, with `fetch`, writes for each local atom
+  // what the run applies to its body (asked from the homes); collective.
+  void exchange_atom_loads(bool fetch, LoadRun run);
   void set_atom_weights();
 
   MPI_Comm comm_ = MPI_COMM_NULL;
