@@ -11,6 +11,7 @@
 #include "coupler_lib/output/gather.hpp"
 #include "coupler_lib/output/hdf5_handle.hpp"
 #include "coupler_lib/output/xdmf.hpp"
+#include "dem_app/output_chunks.hpp"
 
 namespace lbdem {
 
@@ -22,15 +23,39 @@ std::vector<BodyState> gather_states(const std::vector<BodyState>& mine, MPI_Com
 
 namespace {
 
-void write_dataset(hid_t group, const char* name, hid_t type, const void* data, hsize_t rows,
-                   hsize_t cols) {
+H5Handle create_dataset(hid_t group, const char* name, hid_t type, hsize_t rows, hsize_t cols) {
   const hsize_t dims[2] = {rows, cols};
   const H5Handle space(H5Screate_simple(cols == 1 ? 1 : 2, dims, nullptr), H5Sclose,
                        std::string("dataspace of ") + name);
-  const H5Handle set(H5Dcreate2(group, name, type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-                     H5Dclose, std::string("create dataset ") + name);
-  h5_check(H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), std::string("write ") + name);
+  return H5Handle(H5Dcreate2(group, name, type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                  H5Dclose, std::string("create dataset ") + name);
 }
+
+// Rows [first, first + rows) of a dataset of `cols` columns.
+void write_rows(hid_t set, hid_t type, const void* data, hsize_t first, hsize_t rows,
+                hsize_t cols) {
+  if (rows == 0) return;
+  const hsize_t start[2] = {first, 0}, count[2] = {rows, cols};
+  const H5Handle file_space(H5Dget_space(set), H5Sclose, "dataspace of a body dataset");
+  h5_check(H5Sselect_hyperslab(file_space, H5S_SELECT_SET, start, nullptr, count, nullptr),
+           "select rows of a body dataset");
+  const H5Handle memory(H5Screate_simple(cols == 1 ? 1 : 2, count, nullptr), H5Sclose,
+                        "memory space of a body chunk");
+  h5_check(H5Dwrite(set, type, memory, file_space, H5P_DEFAULT, data), "write body rows");
+}
+
+// The datasets of one snapshot, in the order they are created and written.
+struct SnapshotColumn {
+  const char* name;
+  hid_t type;
+  hsize_t cols;
+};
+const SnapshotColumn kColumns[] = {
+    {"position", H5T_NATIVE_DOUBLE, 3}, {"orientation", H5T_NATIVE_DOUBLE, 4},
+    {"velocity", H5T_NATIVE_DOUBLE, 3}, {"angular_velocity", H5T_NATIVE_DOUBLE, 3},
+    {"axis_x", H5T_NATIVE_DOUBLE, 3},   {"axis_y", H5T_NATIVE_DOUBLE, 3},
+    {"axis_z", H5T_NATIVE_DOUBLE, 3},   {"rotation", H5T_NATIVE_DOUBLE, 9},
+    {"id", H5T_NATIVE_LLONG, 1},        {"shape", H5T_NATIVE_INT, 1}};
 
 std::string group_name(int index) {
   char buf[32];
@@ -55,13 +80,28 @@ BodySnapshotWriter::BodySnapshotWriter(const std::string& directory, const std::
 }
 
 void BodySnapshotWriter::write(const std::vector<BodyState>& owned, double time) {
-  const auto all = gather_states(owned, comm_);
+  // Gathered and written in pieces of kOutputChunk ids (dem_app/output_chunks.hpp).
+  const std::vector<BodyState> mine = sorted_by_id(std::span<const BodyState>(owned));
+  long long total = static_cast<long long>(mine.size());
+  MPI_Allreduce(MPI_IN_PLACE, &total, 1, MPI_LONG_LONG, MPI_SUM, comm_);
+  const auto n = static_cast<hsize_t>(total);
+  const std::string g = group_name(count_);
+  H5Handle group;
+  std::vector<H5Handle> sets;
   if (rank_ == 0) {
-    const auto n = static_cast<hsize_t>(all.size());
+    group = H5Handle(H5Gcreate2(file_, g.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+                     "create group " + g);
+    for (const auto& c : kColumns) sets.push_back(create_dataset(group, c.name, c.type, n, c.cols));
+  }
+  const std::int64_t end = id_end(mine, comm_);
+  hsize_t row = 0;
+  for (std::int64_t lo = 0; lo < end; lo += kOutputChunk) {
+    const auto chunk = gather_id_range(mine, lo, std::min(end, lo + kOutputChunk), comm_);
+    if (rank_ != 0) continue;
     std::vector<double> pos, quat, vel, omega, ax, ay, az, rot;
     std::vector<long long> id;
     std::vector<int> shape;
-    for (const auto& s : all) {
+    for (const auto& s : chunk) {
       const Eigen::Matrix3d r =
           Eigen::Quaterniond(s.q[0], s.q[1], s.q[2], s.q[3]).normalized().toRotationMatrix();
       for (int d = 0; d < 3; ++d) {
@@ -79,19 +119,14 @@ void BodySnapshotWriter::write(const std::vector<BodyState>& owned, double time)
       id.push_back(s.id);
       shape.push_back(s.shape);
     }
-    const std::string g = group_name(count_);
-    const H5Handle group(H5Gcreate2(file_, g.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-                         H5Gclose, "create group " + g);
-    write_dataset(group, "position", H5T_NATIVE_DOUBLE, pos.data(), n, 3);
-    write_dataset(group, "orientation", H5T_NATIVE_DOUBLE, quat.data(), n, 4);
-    write_dataset(group, "velocity", H5T_NATIVE_DOUBLE, vel.data(), n, 3);
-    write_dataset(group, "angular_velocity", H5T_NATIVE_DOUBLE, omega.data(), n, 3);
-    write_dataset(group, "axis_x", H5T_NATIVE_DOUBLE, ax.data(), n, 3);
-    write_dataset(group, "axis_y", H5T_NATIVE_DOUBLE, ay.data(), n, 3);
-    write_dataset(group, "axis_z", H5T_NATIVE_DOUBLE, az.data(), n, 3);
-    write_dataset(group, "rotation", H5T_NATIVE_DOUBLE, rot.data(), n, 9);
-    write_dataset(group, "id", H5T_NATIVE_LLONG, id.data(), n, 1);
-    write_dataset(group, "shape", H5T_NATIVE_INT, shape.data(), n, 1);
+    const void* data[] = {pos.data(), quat.data(), vel.data(), omega.data(), ax.data(),
+                          ay.data(),  az.data(),   rot.data(), id.data(),    shape.data()};
+    for (size_t k = 0; k < sets.size(); ++k)
+      write_rows(sets[k], kColumns[k].type, data[k], row, chunk.size(), kColumns[k].cols);
+    row += chunk.size();
+  }
+  if (rank_ == 0) {
+    if (row != n) throw std::logic_error("body snapshot: body ids are not unique");
     write_attribute(group, "time", time);
     h5_check(H5Fflush(file_, H5F_SCOPE_GLOBAL), "flush " + h5_path_);
     times_.push_back(time);

@@ -27,7 +27,8 @@ class BodySnapshotWriter {
   BodySnapshotWriter(const BodySnapshotWriter&) = delete;
   BodySnapshotWriter& operator=(const BodySnapshotWriter&) = delete;
 
-  // Collective: gathers the owned states and appends one snapshot at `time`.
+  // Collective: appends one snapshot at `time`, the owned states gathered on rank 0 in pieces
+  // of kOutputChunk ids (dem_app/output_chunks.hpp).
   void write(const std::vector<BodyState>& owned, double time);
   int snapshots() const { return count_; }
   const std::string& h5_path() const { return h5_path_; }

@@ -92,68 +92,26 @@ std::vector<double> force_weights(const Clump& clump) {
   return w;
 }
 
-ExternalLoads::ExternalLoads(const std::vector<Shape>& shapes, const std::vector<int>& body_shape) {
-  std::vector<std::vector<double>> weights;
-  for (const auto& s : shapes) weights.push_back(force_weights(s.clump));
-  const size_t nb = body_shape.size();
-  inv_count_.resize(nb);
-  for (size_t b = 0; b < nb; ++b) {
-    const auto& w = weights[static_cast<size_t>(body_shape[b])];
-    inv_count_[b] = 1.0 / static_cast<double>(w.size());
-    for (double wi : w) {
-      atom_body_.push_back(static_cast<std::int64_t>(b));
-      atom_weight_.push_back(wi);
+void write_applied(double* columns, const AppliedLoad& load) {
+  for (int d = 0; d < 3; ++d) {
+    columns[kForce + d] = load.force[d];
+    columns[kTorque + d] = load.torque[d];
+    columns[kKickForce + d] = load.kick_force[d];
+    columns[kKickTorque + d] = load.kick_torque[d];
+  }
+}
+
+void ExternalLoads::apply(int nlocal, double* const* columns, double** fext, double** torque) {
+  for (int i = 0; i < nlocal; ++i) {
+    const double* c = columns[i];
+    for (int d = 0; d < 3; ++d) {
+      const double f = c[kForce + d] + (kick_ ? c[kKickForce + d] : 0.0);
+      const double t = c[kTorque + d] + (kick_ ? c[kKickTorque + d] : 0.0);
+      fext[i][d] = c[kWeight] * f;
+      torque[i][d] += c[kTorqueShare] * t;
     }
   }
-  load_force_.assign(3 * nb, 0.0);
-  load_torque_.assign(3 * nb, 0.0);
-  extra_force_.assign(3 * nb, 0.0);
-  last_force_.assign(3 * nb, 0.0);
-  last_torque_.assign(3 * nb, 0.0);
-  kick_force_.assign(3 * nb, 0.0);
-  kick_torque_.assign(3 * nb, 0.0);
-}
-
-void ExternalLoads::begin_run(long substeps) {
-  kick_ = substeps >= 2;
-  for (std::size_t k = 0; k < load_force_.size(); ++k) {
-    kick_force_[k] = kick_ ? 0.5 * (load_force_[k] - last_force_[k]) : 0.0;
-    kick_torque_[k] = kick_ ? 0.5 * (load_torque_[k] - last_torque_[k]) : 0.0;
-  }
-  last_force_ = load_force_;
-  last_torque_ = load_torque_;
-}
-
-void ExternalLoads::set_load(std::int64_t body, const Eigen::Vector3d& force,
-                             const Eigen::Vector3d& torque) {
-  for (int d = 0; d < 3; ++d) {
-    load_force_[3 * static_cast<size_t>(body) + d] = force[d];
-    load_torque_[3 * static_cast<size_t>(body) + d] = torque[d];
-  }
-  if (force.squaredNorm() + torque.squaredNorm() > 0) active_ = true;
-}
-
-void ExternalLoads::set_extra_force(std::int64_t body, const Eigen::Vector3d& force) {
-  for (int d = 0; d < 3; ++d) extra_force_[3 * static_cast<size_t>(body) + d] = force[d];
-  if (force.squaredNorm() > 0) active_ = true;
-}
-
-Eigen::Vector3d ExternalLoads::force(std::int64_t body) const {
-  const auto i = 3 * static_cast<size_t>(body);
-  return {load_force_[i] + extra_force_[i], load_force_[i + 1] + extra_force_[i + 1],
-          load_force_[i + 2] + extra_force_[i + 2]};
-}
-
-Eigen::Vector3d ExternalLoads::torque(std::int64_t body) const {
-  const auto i = 3 * static_cast<size_t>(body);
-  return {load_torque_[i], load_torque_[i + 1], load_torque_[i + 2]};
-}
-
-void ExternalLoads::refresh_active() {
-  active_ = false;
-  for (double v : load_force_) active_ = active_ || v != 0;
-  for (double v : load_torque_) active_ = active_ || v != 0;
-  for (double v : extra_force_) active_ = active_ || v != 0;
+  kick_ = false;
 }
 
 }  // namespace lbdem

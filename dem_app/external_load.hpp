@@ -8,10 +8,6 @@
 // Among such weights we take the least-squares ones. The weights are invariant under the
 // body's motion (the constraints are linear in the body-frame offsets), so they are computed
 // once. The torque is added as T / N to each sphere's torque; the rigid fix sums them.
-#include <Eigen/Dense>
-
-#include <array>
-#include <cstdint>
 #include <vector>
 
 #include "coupler_lib/geometry/shape.hpp"
@@ -22,65 +18,49 @@ namespace lbdem {
 // the moment (e.g. a single sphere away from the centre of mass).
 std::vector<double> force_weights(const Clump& clump);
 
-// Per-body loads and the per-atom tables the callback needs. Atom tags are 1..N, body after
-// body, in the order of the clump spheres (how the engine writes the data file).
+// Per-atom columns of the LAMMPS array d2_lbdem_load (fix property/atom): what the callback
+// applies to each owned sphere. LAMMPS migrates them with the atom, so a sphere that changes
+// rank within a run carries its body's load along and no rank needs a table of all bodies.
+inline constexpr const char* kLoadArray = "d2_lbdem_load";
+inline constexpr const char* kLoadArrayName = "lbdem_load";
+enum LoadColumn : int {
+  kWeight = 0,       // w_i, the sphere's share of the body force
+  kTorqueShare = 1,  // 1 / spheres of the body
+  kForce = 2,        // 3: load + extra force of the body
+  kTorque = 5,       // 3: load torque
+  kKickForce = 8,    // 3: first-evaluation correction (ExternalLoads::begin_run)
+  kKickTorque = 11,  // 3
+  kLoadColumns = 14,
+};
+
+// What a rank applies, through the per-atom columns, to the spheres of one body in a run.
+struct AppliedLoad {
+  double force[3] = {0, 0, 0};  // load + extra
+  double torque[3] = {0, 0, 0};
+  double kick_force[3] = {0, 0, 0};
+  double kick_torque[3] = {0, 0, 0};
+};
+void write_applied(double* columns, const AppliedLoad& load);
+
+// Applies the per-atom columns to the local atoms in the fix external callback.
 class ExternalLoads {
  public:
-  ExternalLoads() = default;
-  // body_shape[b]: shape index of body b.
-  ExternalLoads(const std::vector<Shape>& shapes, const std::vector<int>& body_shape);
-
-  void set_load(std::int64_t body, const Eigen::Vector3d& force, const Eigen::Vector3d& torque);
-  void set_extra_force(std::int64_t body, const Eigen::Vector3d& force);
-  Eigen::Vector3d force(std::int64_t body) const;   // load + extra
-  Eigen::Vector3d torque(std::int64_t body) const;  // load only
-  bool active() const { return active_; }
-
   // Call before every `run N pre no post no`. Velocity Verlet gives each substep's end force
   // two half-kicks (the end of that substep and the start of the next), and without a set-up
   // the run's first half-kick reuses the previous run's last force, so the body would get
   // dt_DEM / 2 (F_old - F_new) besides dt F_new. The first force evaluation of the run
-  // therefore carries (F_new - F_old) / 2 extra, and the run delivers exactly dt F_new: the
-  // momentum the fluid gave is the momentum the body gets (docs/method-loads.md). With a
-  // single substep there is no such evaluation inside the run and the half-kick lag remains.
-  void begin_run(long substeps);
+  // therefore carries (F_new - F_old) / 2 extra (the kick columns), and the run delivers
+  // exactly dt F_new: the momentum the fluid gave is the momentum the body gets
+  // (docs/method-loads.md). With a single substep there is no such evaluation inside the run
+  // and the half-kick lag remains.
+  void begin_run(long substeps) { kick_ = substeps >= 2; }
 
   // Fills fext for the local atoms and adds the torque share to `torque` (LAMMPS arrays);
-  // the first call after begin_run adds the pending correction.
-  template <class Tag>
-  void apply(int nlocal, const Tag* tags, double** fext, double** torque);
-
-  std::size_t bodies() const { return load_force_.size() / 3; }
-  std::vector<double>& load_force() { return load_force_; }
-  std::vector<double>& load_torque() { return load_torque_; }
-  void refresh_active();
+  // the first call after begin_run adds the kick columns.
+  void apply(int nlocal, double* const* columns, double** fext, double** torque);
 
  private:
-  std::vector<std::int64_t> atom_body_;                         // by tag - 1
-  std::vector<double> atom_weight_;                             // by tag - 1
-  std::vector<double> inv_count_;                               // 1 / spheres per body
-  std::vector<double> load_force_, load_torque_, extra_force_;  // 3 per body
-  std::vector<double> last_force_, last_torque_;  // load of the previous run, 3 per body
-  std::vector<double> kick_force_, kick_torque_;  // correction of the run's first evaluation
   bool kick_ = false;
-  bool active_ = false;
 };
-
-template <class Tag>
-void ExternalLoads::apply(int nlocal, const Tag* tags, double** fext, double** torque) {
-  for (int i = 0; i < nlocal; ++i) {
-    const auto a = static_cast<std::size_t>(tags[i] - 1);
-    const auto b = static_cast<std::size_t>(atom_body_[a]);
-    const double w = atom_weight_[a];
-    for (int d = 0; d < 3; ++d) {
-      const std::size_t k = 3 * b + static_cast<std::size_t>(d);
-      const double f = load_force_[k] + extra_force_[k] + (kick_ ? kick_force_[k] : 0.0);
-      const double t = load_torque_[k] + (kick_ ? kick_torque_[k] : 0.0);
-      fext[i][d] = w * f;
-      torque[i][d] += inv_count_[b] * t;
-    }
-  }
-  kick_ = false;
-}
 
 }  // namespace lbdem

@@ -20,10 +20,11 @@ namespace {
 // fix external pf/callback. LAMMPS's step and tag types depend on its build (smallbig,
 // bigbig), so the signature is deduced from the library's FixExternalFnPtr.
 template <class Context, class Step, class Tag>
-void external_callback(void* ptr, Step, int nlocal, Tag* tags, double**, double** fext) {
+void external_callback(void* ptr, Step, int nlocal, Tag*, double**, double** fext) {
   auto* ctx = static_cast<Context*>(ptr);
   auto** torque = static_cast<double**>(lammps_extract_atom(ctx->lmp, "torque"));
-  ctx->loads->apply(nlocal, tags, fext, torque);
+  ctx->loads->apply(nlocal, static_cast<double**>(lammps_extract_atom(ctx->lmp, kLoadArray)), fext,
+                    torque);
   if (!ctx->lubrication) return;
   // Ghosts too: a pair may straddle ranks or a periodic boundary.
   const int nall = nlocal + lammps_extract_setting(ctx->lmp, "nghost");
@@ -39,6 +40,11 @@ template <class Context, class Step, class Tag>
 FixExternalFnPtr callback_for(void (*)(void*, Step, int, Tag*, double**, double**)) {
   return &external_callback<Context, Step, Tag>;
 }
+
+// LAMMPS's tag type (also that of molecule IDs), from the same signature.
+template <class Step, class Tag>
+Tag tag_type(void (*)(void*, Step, int, Tag*, double**, double**));
+using LammpsTag = decltype(tag_type(static_cast<FixExternalFnPtr>(nullptr)));
 
 void write_text(const std::filesystem::path& p, const std::string& text) {
   std::ofstream out(p);
@@ -66,6 +72,7 @@ std::string scratch_directory(MPI_Comm comm, int rank) {
 LammpsEngine::LammpsEngine(MPI_Comm comm, DemSetup setup) : setup_(std::move(setup)) {
   validate_dem_setup(setup_);
   MPI_Comm_dup(comm, &comm_);
+  MPI_Comm_dup(comm, &load_comm_);
   MPI_Comm_rank(comm_, &rank_);
   contact_ = make_contact_model(setup_.params.material, setup_.file);
   dt_ = dem_time_step(setup_);
@@ -80,6 +87,7 @@ LammpsEngine::LammpsEngine(MPI_Comm comm, DemSetup setup) : setup_(std::move(set
 LammpsEngine::~LammpsEngine() {
   if (lmp_) lammps_close(lmp_);
   if (comm_ != MPI_COMM_NULL) MPI_Comm_free(&comm_);
+  if (load_comm_ != MPI_COMM_NULL) MPI_Comm_free(&load_comm_);
 }
 
 void LammpsEngine::command(const std::string& c) const {
@@ -114,19 +122,21 @@ void LammpsEngine::build() {
        lammps_setup_commands(setup_, dt_, contact_.lammps_arguments(), data, infile))
     command(c);
   if (setup_.external_loads) {
-    std::vector<int> body_shape;
-    for (const auto& b : setup_.bodies) body_shape.push_back(b.shape);
-    loads_ = ExternalLoads(setup_.shapes, body_shape);
+    int size = 1;
+    MPI_Comm_size(comm_, &size);
+    table_ = LoadTable(static_cast<std::int64_t>(setup_.bodies.size()), rank_, size);
     callback_ = {lmp_, &loads_, lubrication_.enabled() ? &lubrication_ : nullptr, {}};
-    // Buoyancy for DEM-only runs: -rho_f V g on every body, known to every rank.
+    // Buoyancy for DEM-only runs: -rho_f V g on every body.
     const double rho_f = setup_.params.buoyancy_fluid_density;
     if (rho_f > 0)
       for (size_t i = 0; i < setup_.bodies.size(); ++i) {
         const double volume =
             setup_.shapes[static_cast<size_t>(setup_.bodies[i].shape)].mass.volume;
-        loads_.set_extra_force(static_cast<std::int64_t>(i),
-                               -rho_f * volume * to_eigen(setup_.params.gravity));
+        set_extra_force(static_cast<std::int64_t>(i),
+                        -rho_f * volume * to_eigen(setup_.params.gravity));
       }
+    set_atom_weights();
+    exchange_atom_loads(true, {});  // the set-up's force evaluation below applies them too
     lammps_set_fix_external_callback(
         lmp_, "ext", callback_for<CallbackContext>(static_cast<FixExternalFnPtr>(nullptr)),
         &callback_);
@@ -170,49 +180,67 @@ void LammpsEngine::set_load(std::int64_t id, const Eigen::Vector3d& force,
                             const Eigen::Vector3d& torque) {
   if (!setup_.external_loads)
     throw std::logic_error("set_load: the engine was built without external loads");
-  PendingLoad p{id, 0, {force[0], force[1], force[2]}, {torque[0], torque[1], torque[2]}};
-  pending_.push_back(p);
+  pending_.push_back({id, 0, {force[0], force[1], force[2]}, {torque[0], torque[1], torque[2]}});
 }
 
 void LammpsEngine::set_extra_force(std::int64_t id, const Eigen::Vector3d& force) {
   if (!setup_.external_loads)
     throw std::logic_error("set_extra_force: the engine was built without external loads");
-  PendingLoad p{id, 1, {force[0], force[1], force[2]}, {0, 0, 0}};
-  pending_.push_back(p);
+  if (id < 0 || static_cast<size_t>(id) >= body_count())
+    throw std::out_of_range("extra force for unknown body " + std::to_string(id));
+  if (table_.is_home(id)) table_.update({id, 1, {force[0], force[1], force[2]}, {0, 0, 0}});
 }
 
-void LammpsEngine::exchange_loads() {
-  // A body's spheres may live on ranks other than its owner, and each needs the body's
-  // load: every rank gets every update. Applied in rank order, so the result is reproducible.
-  int mine = static_cast<int>(pending_.size() * sizeof(PendingLoad));
-  int size = 0;
-  MPI_Comm_size(comm_, &size);
-  std::vector<int> counts(static_cast<size_t>(size)), displs(static_cast<size_t>(size));
-  MPI_Allgather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, comm_);
-  long total = 0;
-  for (int r = 0; r < size; ++r) {
-    displs[static_cast<size_t>(r)] = static_cast<int>(total);
-    total += counts[static_cast<size_t>(r)];
+void LammpsEngine::set_atom_weights() {
+  // Atom tags are 1..N, body after body, in the order of the clump spheres (the data file);
+  // the molecule ID is the body's index + 1.
+  std::vector<std::vector<double>> weights;
+  for (const auto& sh : setup_.shapes) weights.push_back(force_weights(sh.clump));
+  std::vector<std::int64_t> first_tag;
+  std::int64_t tag = 1;
+  for (const auto& b : setup_.bodies) {
+    first_tag.push_back(tag);
+    tag += static_cast<std::int64_t>(weights[static_cast<size_t>(b.shape)].size());
   }
-  if (total == 0) return;
-  std::vector<PendingLoad> all(static_cast<size_t>(total) / sizeof(PendingLoad));
-  MPI_Allgatherv(pending_.data(), mine, MPI_BYTE, all.data(), counts.data(), displs.data(),
-                 MPI_BYTE, comm_);
+  const int nlocal = lammps_extract_setting(lmp_, "nlocal");
+  const auto* tags = static_cast<const LammpsTag*>(lammps_extract_atom(lmp_, "id"));
+  const auto* mol = static_cast<const LammpsTag*>(lammps_extract_atom(lmp_, "molecule"));
+  auto** columns = static_cast<double**>(lammps_extract_atom(lmp_, kLoadArray));
+  for (int i = 0; i < nlocal; ++i) {
+    const auto b = static_cast<size_t>(mol[i] - 1);
+    const auto& w = weights[static_cast<size_t>(setup_.bodies[b].shape)];
+    columns[i][kWeight] = w[static_cast<size_t>(static_cast<std::int64_t>(tags[i]) - first_tag[b])];
+    columns[i][kTorqueShare] = 1.0 / static_cast<double>(w.size());
+  }
+}
+
+void LammpsEngine::exchange_atom_loads(bool fetch, LoadRun run) {
+  const int nlocal = lammps_extract_setting(lmp_, "nlocal");
+  const auto* mol = static_cast<const LammpsTag*>(lammps_extract_atom(lmp_, "molecule"));
+  std::vector<std::int64_t> bodies;
+  if (fetch)
+    for (int i = 0; i < nlocal; ++i) bodies.push_back(static_cast<std::int64_t>(mol[i]) - 1);
+  std::sort(bodies.begin(), bodies.end());
+  bodies.erase(std::unique(bodies.begin(), bodies.end()), bodies.end());
+  const std::vector<AppliedLoad> loads =
+      exchange_loads(pending_, bodies, table_, run, load_comm_, traffic_);
   pending_.clear();
-  for (const auto& p : all) {
-    if (p.id < 0 || static_cast<size_t>(p.id) >= body_count())
-      throw std::out_of_range("load for unknown body " + std::to_string(p.id));
-    if (p.kind == 0)
-      loads_.set_load(p.id, {p.f[0], p.f[1], p.f[2]}, {p.t[0], p.t[1], p.t[2]});
-    else
-      loads_.set_extra_force(p.id, {p.f[0], p.f[1], p.f[2]});
+  if (!fetch) return;
+  auto** columns = static_cast<double**>(lammps_extract_atom(lmp_, kLoadArray));
+  for (int i = 0; i < nlocal; ++i) {
+    const auto at = std::lower_bound(bodies.begin(), bodies.end(), mol[i] - 1) - bodies.begin();
+    write_applied(columns[i], loads[static_cast<size_t>(at)]);
   }
 }
 
 void LammpsEngine::run(long substeps) {
-  if (setup_.external_loads) exchange_loads();
+  if (setup_.external_loads) {
+    // Loads set since the last run go to their homes; the spheres held here get their
+    // bodies' loads in per-atom columns, which LAMMPS moves with an atom changing rank.
+    exchange_atom_loads(substeps > 0, {substeps > 0, substeps >= 2});
+    if (substeps > 0) loads_.begin_run(substeps);
+  }
   if (substeps <= 0) return;
-  if (setup_.external_loads) loads_.begin_run(substeps);
   command("run " + std::to_string(substeps) + " pre no post no");
 }
 

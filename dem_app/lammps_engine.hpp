@@ -4,7 +4,8 @@
 //
 // What a coupled driver does with it, once per fluid step:
 //   engine.set_load(id, F, T) for the bodies the coupler delivered (any rank may call it;
-//   loads are exchanged among the DEM ranks inside run()), engine.run(n_dem),
+//   each load goes to the DEM ranks holding the body's spheres inside run(),
+//   dem_app/load_routing.hpp), engine.run(n_dem),
 //   engine.owned_states(step) -> BodyState packets of the bodies this rank owns.
 // Everything else (box, clumps, mass properties, contact model, time step) comes from the
 // DemSetup. All calls that run LAMMPS are collective over the engine's communicator.
@@ -21,6 +22,8 @@
 #include "dem_app/contact_model.hpp"
 #include "dem_app/dem_setup.hpp"
 #include "dem_app/external_load.hpp"
+#include "dem_app/load_routing.hpp"
+#include "dem_app/load_table.hpp"
 #include "dem_app/lubrication.hpp"
 
 namespace lbdem {
@@ -54,11 +57,11 @@ class LammpsEngine {
   // Hydrodynamic (or any) force and torque about the centre of mass, held constant until
   // replaced. Takes effect at the next run(). Needs setup.external_loads.
   void set_load(std::int64_t id, const Eigen::Vector3d& force, const Eigen::Vector3d& torque);
-  // An additional constant force (e.g. buoyancy), same rules.
+  // An additional constant force (e.g. buoyancy), held until replaced: called on every rank
+  // with the same force (only the body's home rank keeps it, without communication).
   void set_extra_force(std::int64_t id, const Eigen::Vector3d& force);
-  // The force and torque that will be imposed on a body (known on every rank after run()).
-  Eigen::Vector3d imposed_force(std::int64_t id) const { return loads_.force(id); }
-  Eigen::Vector3d imposed_torque(std::int64_t id) const { return loads_.torque(id); }
+  // What this rank received in the load exchanges so far (payload and message sizes).
+  const LoadTraffic& load_traffic() const { return traffic_; }
   // The sub-grid lubrication correction (docs/lubrication.md); disabled unless the scene asks.
   const Lubrication& lubrication() const { return lubrication_; }
 
@@ -81,7 +84,10 @@ class LammpsEngine {
  private:
   void command(const std::string& c) const;
   void build();
-  void exchange_loads();
+  // Sends the pending loads to their homes and, with `fetch`, writes for each local atom
+  // what the run applies to its body (asked from the homes); collective.
+  void exchange_atom_loads(bool fetch, LoadRun run);
+  void set_atom_weights();
 
   MPI_Comm comm_ = MPI_COMM_NULL;
   int rank_ = 0;
@@ -92,7 +98,10 @@ class LammpsEngine {
   std::int64_t first_step_ = 0;
   std::vector<double> mass_;
   std::vector<Eigen::Quaterniond> offset_;  // q_lammps(0)^-1 q_user(0) per body
+  MPI_Comm load_comm_ = MPI_COMM_NULL;      // the load exchange's own messages
+  LoadTable table_;
   ExternalLoads loads_;
+  LoadTraffic traffic_;
   Lubrication lubrication_;
   struct CallbackContext {
     void* lmp = nullptr;
@@ -100,12 +109,7 @@ class LammpsEngine {
     Lubrication* lubrication = nullptr;  // null when disabled
     std::vector<std::int64_t> tags;      // scratch: local and ghost tags as 64 bit
   } callback_;
-  struct PendingLoad {
-    std::int64_t id;
-    std::int64_t kind;  // 0 load, 1 extra force
-    double f[3], t[3];
-  };
-  std::vector<PendingLoad> pending_;
+  std::vector<LoadUpdate> pending_;  // loads set since the last run
 };
 
 }  // namespace lbdem

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "dem_app/body_state.hpp"
+#include "dem_app/external_load.hpp"
 #include "dem_app/quaternion.hpp"
 
 namespace lbdem {
@@ -118,6 +119,10 @@ std::vector<std::string> lammps_setup_commands(const DemSetup& setup, double dt,
   c.push_back(s.str());
   c.push_back("create_box 1 box");
   c.push_back("fix prop all property/atom mol ghost yes");
+  // What fix external applies to each sphere (dem_app/external_load.hpp), moved with it.
+  if (setup.external_loads)
+    c.push_back(std::string("fix lbdemload all property/atom ") + kLoadArray + " " +
+                std::to_string(kLoadColumns));
   c.push_back("read_data " + data_path + " add append fix prop NULL Molecules");
 
   double extent = 0;

@@ -9,7 +9,9 @@
 //   1. DEM cost: seconds per step and atom-steps per second with `run S` in one call;
 //   2. the same S steps in chunks of n substeps (as a coupled run does), without loads;
 //   3. chunks of n with the exchange work: set_load on every owned body before each chunk
-//      and owned_states after it (fix external with per-atom weights + per-atom torque).
+//      and owned_states after it (fix external with per-atom weights + per-atom torque),
+//      and the bytes each rank received in the DEM ranks' load exchange per chunk (largest
+//      and mean over ranks; LammpsEngine::load_traffic).
 // 3 - 2 is the overhead of the external force/torque and state extraction per exchange.
 // With --lubrication H (H: the cut-off gap h_c as a fraction of the cube edge), a fourth
 // variant adds the sub-grid lubrication correction (docs/lubrication.md; mu = 1e-3 Pa s,
@@ -159,6 +161,7 @@ int main(int argc, char** argv) {
     // separately (rank 0's).
     enum Variant { kOneRun, kChunked, kExchange, kLubricated };
     double exchange_calls = 0;
+    double bytes_max = 0, bytes_mean = 0, messages_max = 0;  // per chunk, exchange variant
     long lubrication_builds = 0;
     std::size_t lubrication_pairs = 0;
     auto variant = [&](Variant v) {
@@ -168,6 +171,7 @@ int main(int argc, char** argv) {
         atoms += static_cast<double>(e.setup().shapes[static_cast<size_t>(b.shape)].clump.size());
       e.run(100);  // warm-up: neighbour lists, first contacts
       double calls = 0;
+      const lbdem::LoadTraffic before = e.load_traffic();
       const double t = timed(MPI_COMM_WORLD, [&] {
         if (v == kOneRun) {
           e.run(steps);
@@ -183,7 +187,17 @@ int main(int argc, char** argv) {
           e.run(o.substeps);
         }
       });
-      if (v == kExchange) exchange_calls = calls;
+      if (v == kExchange) {
+        exchange_calls = calls;
+        const double n = static_cast<double>(chunks);
+        double bytes = static_cast<double>(e.load_traffic().bytes - before.bytes) / n;
+        double messages = static_cast<double>(e.load_traffic().messages - before.messages) / n;
+        MPI_Allreduce(&bytes, &bytes_max, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+        MPI_Allreduce(&bytes, &bytes_mean, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+        MPI_Allreduce(MPI_IN_PLACE, &messages, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+        bytes_mean /= size;
+        messages_max = messages;
+      }
       if (v == kLubricated) {
         lubrication_builds = e.lubrication().builds();
         lubrication_pairs = e.lubrication().pairs();
@@ -219,6 +233,10 @@ int main(int argc, char** argv) {
           t_exchange, 1e3 * (t_exchange - t_chunked) / static_cast<double>(chunks),
           100.0 * (t_exchange - t_chunked) / t_chunked,
           1e3 * best_calls / static_cast<double>(chunks));
+      std::printf(
+          "  load exchange received per rank and chunk: %.0f bytes largest, %.0f mean, "
+          "%.0f messages largest\n",
+          bytes_max, bytes_mean, messages_max);
       if (o.lubrication > 0)
         std::printf(
             "  with lubrication (h_c = %.3g edge): %.4f s  (+%.1f %% over the exchange variant; "

@@ -5,8 +5,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "coupler_lib/output/gather.hpp"
 #include "coupler_lib/output/series_resume.hpp"
+#include "dem_app/output_chunks.hpp"
 
 namespace lbdem {
 
@@ -34,26 +34,30 @@ long long BodyTrace::flushed_bytes() {
 
 void BodyTrace::write(double time, std::span<const BodyState> states,
                       std::span<const BodyLoad> loads) {
-  std::vector<BodyState> all_states = gather_to_root(states, comm_);
-  std::vector<BodyLoad> all_loads = gather_to_root(loads, comm_);
-  if (rank_ != 0) return;
-  std::map<std::int64_t, const BodyLoad*> by_id;
-  for (const auto& l : all_loads) by_id[l.id] = &l;
-  std::sort(all_states.begin(), all_states.end(),
-            [](const BodyState& a, const BodyState& b) { return a.id < b.id; });
-  for (const auto& s : all_states) {
-    const BodyLoad zero{};
-    const BodyLoad& l = by_id.count(s.id) ? *by_id[s.id] : zero;
-    out_ << time << ',' << s.id;
-    for (double v : s.x) out_ << ',' << v;
-    for (double v : s.v) out_ << ',' << v;
-    for (double v : s.w) out_ << ',' << v;
-    for (double v : s.q) out_ << ',' << v;
-    for (double v : l.f) out_ << ',' << v;
-    for (double v : l.t) out_ << ',' << v;
-    out_ << '\n';
+  const std::vector<BodyState> my_states = sorted_by_id(states);
+  const std::vector<BodyLoad> my_loads = sorted_by_id(loads);
+  const std::int64_t end = std::max(id_end(my_states, comm_), id_end(my_loads, comm_));
+  for (std::int64_t lo = 0; lo < end; lo += kOutputChunk) {
+    const std::int64_t hi = std::min(end, lo + kOutputChunk);
+    const std::vector<BodyState> chunk_states = gather_id_range(my_states, lo, hi, comm_);
+    const std::vector<BodyLoad> chunk_loads = gather_id_range(my_loads, lo, hi, comm_);
+    if (rank_ != 0) continue;
+    std::map<std::int64_t, const BodyLoad*> by_id;  // the last one in rank order
+    for (const auto& l : chunk_loads) by_id[l.id] = &l;
+    for (const auto& s : chunk_states) {
+      const BodyLoad zero{};
+      const BodyLoad& l = by_id.count(s.id) ? *by_id[s.id] : zero;
+      out_ << time << ',' << s.id;
+      for (double v : s.x) out_ << ',' << v;
+      for (double v : s.v) out_ << ',' << v;
+      for (double v : s.w) out_ << ',' << v;
+      for (double v : s.q) out_ << ',' << v;
+      for (double v : l.f) out_ << ',' << v;
+      for (double v : l.t) out_ << ',' << v;
+      out_ << '\n';
+    }
   }
-  out_.flush();
+  if (rank_ == 0) out_.flush();
 }
 
 }  // namespace lbdem

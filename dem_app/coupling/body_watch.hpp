@@ -30,8 +30,9 @@ BodyWatchLimits body_watch_limits(const Scene& scene);
 
 // Collective over `side`: the diagnosis (what, where, when, likely cause, what to change), the
 // same on every rank, or an empty string when the bodies are fine. Non-finite states and speeds
-// are checked always (cheap, every step), the clump overlap search only with `overlaps` (at the
-// steps both programs agree, stop_request.hpp: it costs a search over neighbouring bodies).
+// are checked always (cheap, every step: each rank its own bodies, the first finding in rank
+// order reported), the clump overlap search only with `overlaps` (at the steps both programs
+// agree, stop_request.hpp: it gathers all bodies on rank 0 and searches neighbouring pairs).
 std::string check_bodies(const std::vector<BodyState>& owned, std::int64_t step, double time,
                          const DemSetup& setup, const BodyWatchLimits& limits, bool overlaps,
                          MPI_Comm side);
