@@ -6,20 +6,25 @@
 // throws SideError naming the silent side, the last exchange this side completed and the last
 // checkpoint, and run_app ends the whole job (MPI_Abort also ends the stopped process).
 //
-// The limit is coupling.stall_timeout when given; else it is generous and grows with the run:
-// the larger of kAutomaticFloor and kAutomaticFactor x the longest wall time seen so far between
-// two completed exchanges (a run that slows down gradually is not a stall).
+// The limit is coupling.stall_timeout when given; else it is automatic. The first wait of a run
+// waits for the other program's set-up (lattice, porosity field, LAMMPS), which grows with the
+// scene: it gets kSetUpLimit. From then on the limit is the larger of kAutomaticFloor and
+// kAutomaticFactor x the longest wall time seen so far between two completed exchanges (a run
+// that slows down gradually, or writes a large checkpoint once, is not a stall), so that a
+// stopped rank of a fast run ends the job about a minute after it stopped.
 #include <chrono>
 #include <cstdint>
 #include <string>
 
 #include "coupler_lib/coupling/world.hpp"
+#include "coupler_lib/scene/scene.hpp"
 
 namespace lbdem {
 
 class StallWatch {
  public:
-  static constexpr double kAutomaticFloor = 600;  // wall s
+  static constexpr double kSetUpLimit = 600;     // wall s, the first wait only
+  static constexpr double kAutomaticFloor = 60;  // wall s
   static constexpr double kAutomaticFactor = 50;
 
   // `timeout_s` > 0: a fixed limit in wall seconds; 0: automatic (see above).
@@ -40,5 +45,10 @@ class StallWatch {
   Clock::time_point wait_start_{}, last_end_{};
   double slowest_gap_s_ = 0;
 };
+
+// The limit a coupled run of `scene` works with, in words, for --check: the fixed
+// coupling.stall_timeout or the automatic rule above; with checkpoints, the size of the fluid's
+// and how long it may take to write before the automatic limit could mistake it for a stall.
+std::string describe_stall_limit(const Scene& scene);
 
 }  // namespace lbdem
