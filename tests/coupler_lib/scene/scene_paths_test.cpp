@@ -87,7 +87,7 @@ TEST_F(ScenePathsOnDisk, AnOutputDirectoryThatIsAFileIsRefused) {
 
 TEST_F(ScenePathsOnDisk, AMissingOutputDirectoryBelowAWritableOneIsAccepted) {
   std::string t = kCoupled;
-  t.insert(t.find("dem:"), "  output: {directory: new/deeper}\n");
+  t.insert(t.find("dem:"), "  output: {directory: new/deeper, series: {interval: 1.0e-4}}\n");
   EXPECT_EQ(refusal(t, scene_file()), "");
   EXPECT_FALSE(fs::exists(dir_ / "new"));  // checking creates nothing
 }
@@ -99,9 +99,9 @@ TEST_F(ScenePathsOnDisk, ARecordingOrLastGoodFileWhereAFolderIsIsRefused) {
   EXPECT_NE(m.find("folder' is a directory; name a file"), std::string::npos) << m;
 
   std::string t = kCoupled;
-  t.insert(t.find("dem:"), "  output: {stability: {last_good: folder}}\n");
+  t.insert(t.find("dem:"), "  stability: {last_good: folder}\n");
   const std::string ml = refusal(t, scene_file());
-  EXPECT_NE(ml.find("fluid.output.stability.last_good: '"), std::string::npos) << ml;
+  EXPECT_NE(ml.find("fluid.stability.last_good: '"), std::string::npos) << ml;
 }
 
 TEST_F(ScenePathsOnDisk, TheRecordingIsResolvedAgainstTheScenesFolder) {
