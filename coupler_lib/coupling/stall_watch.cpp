@@ -70,7 +70,7 @@ std::string describe_stall_limit(const Scene& scene) {
     const double gib = double(c[0]) * c[1] * c[2] * 19 *
                        (scene.fluid->precision == "float" ? 4 : 8) / (1024.0 * 1024.0 * 1024.0);
     m << "; a fluid checkpoint holds " << gib << " GiB: the first must be written within "
-      << StallWatch::kAutomaticFloor << " s (" << gib / StallWatch::kAutomaticFloor * 1024
+      << StallWatch::kAutomaticFloor << " s (at least " << gib / StallWatch::kAutomaticFloor * 1024
       << " MiB/s) unless the exchanges are slower, else set coupling.stall_timeout";
   }
   return m.str();
