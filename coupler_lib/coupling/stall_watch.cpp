@@ -19,16 +19,18 @@ void StallWatch::begin(std::int64_t step) {
 
 void StallWatch::end() {
   const auto now = Clock::now();
-  if (last_completed_ >= 0)
+  // The set-up's gaps are not steps: they would lift the limit of the whole run.
+  if (completed_ >= kSetUpWaits)
     slowest_gap_s_ =
         std::max(slowest_gap_s_, std::chrono::duration<double>(now - last_end_).count());
   last_end_ = now;
   last_completed_ = step_;
+  ++completed_;
 }
 
 double StallWatch::limit_s() const {
   if (timeout_s_ > 0) return timeout_s_;
-  if (last_completed_ < 0) return kSetUpLimit;
+  if (completed_ < kSetUpWaits) return kSetUpLimit;
   return std::max(kAutomaticFloor, kAutomaticFactor * slowest_gap_s_);
 }
 
@@ -61,8 +63,8 @@ std::string describe_stall_limit(const Scene& scene) {
     return m.str();
   }
   m << "stall limit: automatic (coupling.stall_timeout not set): " << StallWatch::kSetUpLimit
-    << " s for the first exchange (the other program's set-up), then the larger of "
-    << StallWatch::kAutomaticFloor << " s and " << StallWatch::kAutomaticFactor
+    << " s for the first two exchanges (the other program's set-up and first step), then the "
+    << "larger of " << StallWatch::kAutomaticFloor << " s and " << StallWatch::kAutomaticFactor
     << " x the slowest exchange so far";
   if (scene.fluid && scene.coupling.checkpoint_interval > 0) {
     // One copy of the 19 populations per cell: what a fluid checkpoint holds.

@@ -6,12 +6,12 @@
 // throws SideError naming the silent side, the last exchange this side completed and the last
 // checkpoint, and run_app ends the whole job (MPI_Abort also ends the stopped process).
 //
-// The limit is coupling.stall_timeout when given; else it is automatic. The first wait of a run
-// waits for the other program's set-up (lattice, porosity field, LAMMPS), which grows with the
-// scene: it gets kSetUpLimit. From then on the limit is the larger of kAutomaticFloor and
-// kAutomaticFactor x the longest wall time seen so far between two completed exchanges (a run
-// that slows down gradually, or writes a large checkpoint once, is not a stall), so that a
-// stopped rank of a fast run ends the job about a minute after it stopped.
+// The limit is coupling.stall_timeout when given; else it is automatic. The waits of the first
+// two exchanges hold the other program's set-up and first step (lattice, porosity field, LAMMPS;
+// they grow with the scene): they get kSetUpLimit. From then on the limit is the larger of
+// kAutomaticFloor and kAutomaticFactor x the longest wall time seen so far between two completed
+// waits after the set-up (a run that slows down gradually, or writes a large checkpoint once, is
+// not a stall), so that a stopped rank of a fast run ends the job about a minute after it stopped.
 #include <chrono>
 #include <cstdint>
 #include <string>
@@ -23,7 +23,8 @@ namespace lbdem {
 
 class StallWatch {
  public:
-  static constexpr double kSetUpLimit = 600;     // wall s, the first wait only
+  static constexpr double kSetUpLimit = 600;     // wall s, the first kSetUpWaits waits
+  static constexpr int kSetUpWaits = 4;          // two per exchange: states and loads
   static constexpr double kAutomaticFloor = 60;  // wall s
   static constexpr double kAutomaticFactor = 50;
 
@@ -42,6 +43,7 @@ class StallWatch {
   std::string peer_;
   std::int64_t step_ = 0;
   std::int64_t last_completed_ = -1;  // -1: none yet
+  int completed_ = 0;                 // waits completed
   Clock::time_point wait_start_{}, last_end_{};
   double slowest_gap_s_ = 0;
 };

@@ -37,7 +37,7 @@ CouplingParams parse_coupling(Section& s) {
   p.stall_timeout = s.get<double>(
       "stall_timeout", 0.0,
       "wall s a side waits for the other's packets before ending the job (0: automatic, 600 s "
-      "for the first exchange, then the larger of 60 s and 50 x the slowest exchange so far)",
+      "for the first two exchanges, then the larger of 60 s and 50 x the slowest exchange so far)",
       Bounds::non_negative());
   p.wait = s.choice("wait", "backoff", {"backoff", "blocking"},
                     "how a side waits for the other: backoff sleeps, blocking spins a core");

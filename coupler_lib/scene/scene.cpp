@@ -24,7 +24,8 @@ Scene parse_scene(Section root, std::uint64_t hash) {
   sc.file = root.file();
   sc.hash = hash;
   sc.source = root.source();
-  sc.name = root.get<std::string>("name", "scene", "name used in output file names");
+  sc.name = root.get<std::string>("name", "scene",
+                                  "name used in output file names (letters, digits, - _ .)");
   check_plain_name(root, "name", sc.name);
   sc.log_level = root.choice("log_level", "info", {"trace", "debug", "info", "warn", "error"},
                              "logging level (the command line's --log-level wins)");
