@@ -9,6 +9,7 @@
 
 #include "coupler_lib/app/scene_json.hpp"
 #include "coupler_lib/coupling/checkpoint_files.hpp"
+#include "coupler_lib/coupling/stall_watch.hpp"
 #include "coupler_lib/scene/scene_checks.hpp"
 
 namespace lbdem {
@@ -154,6 +155,8 @@ int run_app(int argc, char** argv, const AppInfo& info,
     const RunningApp guard(ctx);
     if (ctx.cli.check) {
       check(ctx);
+      if (ctx.scene.coupled() && ctx.rank == 0)
+        ctx.log->info("coupling: {}", describe_stall_limit(ctx.scene));
       if (ctx.cli.json && ctx.rank == 0) std::cout << scene_json(ctx.scene) << std::flush;
     } else {
       rc = run(ctx);

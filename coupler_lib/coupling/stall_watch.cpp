@@ -19,15 +19,18 @@ void StallWatch::begin(std::int64_t step) {
 
 void StallWatch::end() {
   const auto now = Clock::now();
-  if (last_completed_ >= 0)
+  // The set-up's gaps are not steps: they would lift the limit of the whole run.
+  if (completed_ >= kSetUpWaits)
     slowest_gap_s_ =
         std::max(slowest_gap_s_, std::chrono::duration<double>(now - last_end_).count());
   last_end_ = now;
   last_completed_ = step_;
+  ++completed_;
 }
 
 double StallWatch::limit_s() const {
   if (timeout_s_ > 0) return timeout_s_;
+  if (completed_ < kSetUpWaits) return kSetUpLimit;
   return std::max(kAutomaticFloor, kAutomaticFactor * slowest_gap_s_);
 }
 
@@ -38,7 +41,8 @@ void StallWatch::check() const {
   std::ostringstream m;
   m.precision(3);
   m << peer_ << " has sent nothing for " << waited << " s (limit " << limit << " s, "
-    << (timeout_s_ > 0 ? "coupling.stall_timeout" : "automatic: coupling.stall_timeout not set")
+    << (timeout_s_ > 0 ? "coupling.stall_timeout"
+                       : "automatic: coupling.stall_timeout not set, docs/reliability.md")
     << ") while this program waits for its packets at step " << step_
     << ": one of its ranks is stopped, hung or deadlocked; this program's last completed exchange: "
     << (last_completed_ >= 0 ? "step " + std::to_string(last_completed_) : std::string("none"))
@@ -47,6 +51,31 @@ void StallWatch::check() const {
                                         : remembered_checkpoint() + " (continue with --restart " +
                                               remembered_checkpoint() + " on both programs)");
   throw SideError(m.str());
+}
+
+std::string describe_stall_limit(const Scene& scene) {
+  std::ostringstream m;
+  m.precision(3);
+  const double fixed = scene.coupling.stall_timeout;
+  if (fixed > 0) {
+    m << "stall limit: " << fixed << " s (coupling.stall_timeout): a side that waits longer for "
+      << "the other's packets ends the job";
+    return m.str();
+  }
+  m << "stall limit: automatic (coupling.stall_timeout not set): " << StallWatch::kSetUpLimit
+    << " s for the first two exchanges (the other program's set-up and first step), then the "
+    << "larger of " << StallWatch::kAutomaticFloor << " s and " << StallWatch::kAutomaticFactor
+    << " x the slowest exchange so far";
+  if (scene.fluid && scene.coupling.checkpoint_interval > 0) {
+    // One copy of the 19 populations per cell: what a fluid checkpoint holds.
+    const auto& c = scene.fluid->cells;
+    const double gib = double(c[0]) * c[1] * c[2] * 19 *
+                       (scene.fluid->precision == "float" ? 4 : 8) / (1024.0 * 1024.0 * 1024.0);
+    m << "; a fluid checkpoint holds " << gib << " GiB: the first must be written within "
+      << StallWatch::kAutomaticFloor << " s (at least " << gib / StallWatch::kAutomaticFloor * 1024
+      << " MiB/s) unless the exchanges are slower, else set coupling.stall_timeout";
+  }
+  return m.str();
 }
 
 }  // namespace lbdem

@@ -2,11 +2,18 @@
 
 #include <string>
 
+#include "coupler_lib/scene/scene_paths.hpp"
+
 namespace lbdem {
 
 CouplingParams parse_coupling(Section& s) {
   CouplingParams p;
-  p.record = s.get<std::string>("record", "", "HDF5 file that records every packet");
+  p.record = s.get<std::string>("record", "",
+                                "HDF5 file that records every packet (relative to the scene)");
+  if (!p.record.empty()) {
+    p.record = resolve_scene_path(s.file(), p.record);
+    check_output_file(s, "record", p.record);
+  }
   p.margin = s.get<double>("margin", 2.0, "stencil margin in fluid cells", Bounds::non_negative());
   p.exchange_interval = s.get<int>("exchange_interval", 1, "fluid steps between packet exchanges",
                                    Bounds::at_least(1));
@@ -29,8 +36,8 @@ CouplingParams parse_coupling(Section& s) {
                     Bounds::positive());
   p.stall_timeout = s.get<double>(
       "stall_timeout", 0.0,
-      "wall s a side waits for the other's packets before ending the job (0: automatic, the "
-      "larger of 600 s and 50 x the slowest exchange so far)",
+      "wall s a side waits for the other's packets before ending the job (0: automatic, 600 s "
+      "for the first two exchanges, then the larger of 60 s and 50 x the slowest exchange so far)",
       Bounds::non_negative());
   p.wait = s.choice("wait", "backoff", {"backoff", "blocking"},
                     "how a side waits for the other: backoff sleeps, blocking spins a core");

@@ -1,5 +1,7 @@
 #include "coupler_lib/scene/dem_section.hpp"
 
+#include "coupler_lib/scene/scene_paths.hpp"
+
 namespace lbdem {
 
 const char* axis_name(int axis) {
@@ -117,7 +119,10 @@ DemParams parse_dem(Section& s) {
     p.output.energy_interval = o.get<double>(
         "energy_interval", 0.0, "simulated seconds between energy rows (0: same as interval)",
         Bounds::non_negative());
-    p.output.directory = o.get<std::string>("directory", ".", "output directory");
+    p.output.directory =
+        o.get<std::string>("directory", ".", "output directory (relative to the scene)");
+    // Kept as written: the programs resolve it against the scene file's folder where they use it.
+    check_output_directory(o, "directory", resolve_scene_path(o.file(), p.output.directory));
     o.finish();
   }
   {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "coupler_lib/scene/scene_paths.hpp"
+
 namespace lbdem {
 
 namespace {
@@ -66,7 +68,10 @@ StabilityParams parse_stability(Section& s) {
       "last_good", "",
       "file for the last good state, relative to the scene (default: <output directory>/<scene "
       "name>_last_good.h5)");
-  if (!p.last_good.empty()) p.last_good = resolve_scene_path(s.file(), p.last_good);
+  if (!p.last_good.empty()) {
+    p.last_good = resolve_scene_path(s.file(), p.last_good);
+    check_output_file(s, "last_good", p.last_good);
+  }
   s.finish();
   return p;
 }
@@ -108,6 +113,7 @@ FluidOutputParams parse_fluid_output(Section& fluid, const UnitConverter& units,
     p.directory = resolve_scene_path(
         o->file(), o->get<std::string>("directory", ".",
                                        "directory for all output files (relative to the scene)"));
+    check_output_directory(*o, "directory", p.directory);
     if (auto f = o->optional_section("fields", "HDF5 + XDMF field files (ParaView)"))
       p.fields = parse_fields(*f, units, cells);
     if (auto s = o->optional_section("series", "CSV time series of domain means")) {

@@ -5,6 +5,8 @@
 #include <sstream>
 
 #include "coupler_lib/scene/coupled_limits.hpp"
+#include "coupler_lib/scene/scene_paths.hpp"
+#include "coupler_lib/scene/section_agreement.hpp"
 
 namespace lbdem {
 
@@ -22,7 +24,9 @@ Scene parse_scene(Section root, std::uint64_t hash) {
   sc.file = root.file();
   sc.hash = hash;
   sc.source = root.source();
-  sc.name = root.get<std::string>("name", "scene", "name used in output file names");
+  sc.name = root.get<std::string>("name", "scene",
+                                  "name used in output file names (letters, digits, - _ .)");
+  check_plain_name(root, "name", sc.name);
   sc.log_level = root.choice("log_level", "info", {"trace", "debug", "info", "warn", "error"},
                              "logging level (the command line's --log-level wins)");
   {
@@ -34,8 +38,8 @@ Scene parse_scene(Section root, std::uint64_t hash) {
   }
   if (auto f = root.optional_section("fluid", "lattice Boltzmann fluid"))
     sc.fluid = parse_fluid(*f);
-  if (auto d = root.optional_section("dem", "discrete element bodies (LAMMPS)"))
-    sc.dem = parse_dem(*d);
+  auto dem = root.optional_section("dem", "discrete element bodies (LAMMPS)");
+  if (dem) sc.dem = parse_dem(*dem);
   sc.shapes = parse_shapes(root);
   sc.bodies = parse_bodies(root, sc.shapes);
   {
@@ -45,7 +49,10 @@ Scene parse_scene(Section root, std::uint64_t hash) {
   root.finish();
   if (!sc.fluid && !sc.dem)
     throw SceneError(sc.file + ": the scene has neither a 'fluid' nor a 'dem' section");
-  if (sc.dem) resolve_lubrication(sc.dem->lubrication, sc.fluid ? &*sc.fluid : nullptr, sc.file);
+  if (sc.dem) {
+    check_sections_agree(sc, *dem);
+    resolve_lubrication(sc.dem->lubrication, sc.fluid ? &*sc.fluid : nullptr, sc.file);
+  }
   check_coupled_limits(sc);
   return sc;
 }

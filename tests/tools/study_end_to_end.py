@@ -1,7 +1,9 @@
 #!/usr/bin/python3
 """ctest tools_study_end_to_end: tools/study.py on tests/tools/study_tiny.yaml through both
 programs (packing, bodies file, single-body run, suspension run, analysis, summary, plots),
-then again: every run must be skipped and the summary be the same.
+then again: every run must be skipped and the summary be the same. The log holds no warning
+and no "None", and the run held the momentum of fluid + bodies (momentum_change below the
+study's tolerance).
 
     /usr/bin/python3 tests/tools/study_end_to_end.py BUILD_DIR
 """
@@ -28,6 +30,11 @@ def main():
             rows = list(csv.DictReader(f))
         ok = len(rows) == 1 and rows[0]["shape"] == "cube" and float(rows[0]["u_T"]) > 0
         ok = ok and float(rows[0]["settling_velocity"]) > 0 and int(rows[0]["bodies"]) == 8
+        change = float(rows[0]["momentum_change"])
+        print(f"momentum change of fluid + bodies: {change:.3g} of the bodies' momentum; "
+              f"warnings in the log: {first.stdout.count('WARNING')}; 'None': "
+              f"{first.stdout.count('None')}")
+        ok = ok and change < 1e-3 and "WARNING" not in first.stdout and "None" not in first.stdout
         for png in ("settling.png", "rdf.png", "correlation.png", "vacf.png"):
             ok = ok and os.path.getsize(os.path.join(out, png)) > 0
         second = subprocess.run(cmd, capture_output=True, text=True)

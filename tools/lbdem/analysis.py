@@ -52,6 +52,18 @@ def settling_velocity(up_z, j_z):
     return np.asarray(up_z, float) - np.asarray(j_z, float)
 
 
+def momentum_change(fluid, bodies, applied):
+    """Change of the momentum of fluid plus bodies less the impulse of the external forces since
+    the first row: (fluid + bodies - applied)(t) - (fluid + bodies - applied)(t_0), arrays
+    (T, 3) in N s (the columns of fluid_app's momentum audit, docs/method-loads.md section 7).
+
+    This, not the volume flux, is what a triply periodic settling box holds: with rho_p != rho_f
+    the frame of zero momentum, rho_f (1 - phi) <u_f> + rho_p phi <u_p> = 0, has the volume flux
+    j = phi <u_p> (1 - rho_p / rho_f) != 0."""
+    total = np.asarray(fluid, float) + np.asarray(bodies, float) - np.asarray(applied, float)
+    return total - total[0]
+
+
 def slip_velocity(v_zero_flux, phi):
     """Relative velocity of bodies and fluid, <u_p> - <u_f> = V / (1 - phi), from the settling
     velocity V in the zero-volume-flux frame (j = phi u_p + (1 - phi) u_f = 0)."""

@@ -6,6 +6,8 @@ Paths in a scene are relative to the scene file's folder. A coupled run writes
                                              (time,id,x,y,z,vx,vy,vz,wx,wy,wz,qw,qx,qy,qz,fx..tz)
   <dem.output.directory>/<name>_bodies.h5    one group per snapshot (position, orientation, ...)
   <fluid.output.directory>/<name>_series.csv the fluid's domain means (time_s, mean_uz_m_s, ...)
+  <dem.output.directory>/<name>_momentum.csv the momentum audit of a triply periodic settling run
+                                             (fluid_p*, bodies_p*, applied_p*, N s)
 """
 import csv
 import os
@@ -46,6 +48,11 @@ def trace_path(scene_path, scene=None):
 def bodies_h5_path(scene_path, scene=None):
     s = scene or load_scene(scene_path)
     return os.path.join(dem_output_dir(scene_path, s), s["name"] + "_bodies.h5")
+
+
+def momentum_path(scene_path, scene=None):
+    s = scene or load_scene(scene_path)
+    return os.path.join(dem_output_dir(scene_path, s), s["name"] + "_momentum.csv")
 
 
 def series_path(scene_path, scene=None):
@@ -104,7 +111,8 @@ class Trace:
 
 
 def read_series(path):
-    """The fluid's domain means as {column: array}."""
+    """A numeric CSV with a header (the fluid's domain means, the momentum audit) as
+    {column: array}."""
     data = np.atleast_1d(np.genfromtxt(path, delimiter=",", names=True))
     return {name: np.asarray(data[name]) for name in data.dtype.names}
 

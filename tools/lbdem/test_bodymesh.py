@@ -34,7 +34,7 @@ class BodyMesh(unittest.TestCase):
             scene = {"name": "s", "time": {"end": 0.5},
                      "fluid": {"domain": [1, 1, 1], "dx": 0.1, "viscosity": 1e-6,
                                "output": {"directory": ".", "series": {"interval": 1e-3}}},
-                     "dem": {"output": {"directory": "."}},
+                     "dem": {"periodic": "xyz", "output": {"directory": "."}},
                      "shapes": [{"name": "c", "kind": "cube", "edge": 0.1}],
                      "bodies": [{"file": "b.csv", "shape": "c", "density": 2500}]}
             path = os.path.join(d, "s.yaml")

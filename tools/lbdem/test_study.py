@@ -1,9 +1,11 @@
 """The sweep driver's bookkeeping: finished runs are skipped, interrupted ones restart cleanly,
-a changed scene runs again; the cost estimate (ctest tools_lbdem_py)."""
+a changed scene runs again; the cost estimate; the momentum check (ctest tools_lbdem_py)."""
 import os
 import tempfile
 import unittest
 from unittest import mock
+
+import numpy as np
 
 from lbdem import study
 
@@ -51,6 +53,54 @@ class Sweep(unittest.TestCase):
         # itself is reproduced.
         s.finished = s.finished[:1]
         self.assertAlmostEqual(s.estimate(10, 1e5, 1), 10 * (1e5 / 5e6 + 1e-3), places=9)
+
+
+
+def write_audit(path, fluid_z, bodies_z, applied_z):
+    with open(path, "w") as f:
+        f.write("step,time_s,fluid_px,fluid_py,fluid_pz,bodies_px,bodies_py,bodies_pz,"
+                "applied_px,applied_py,applied_pz\n")
+        for k, (p, b, a) in enumerate(zip(fluid_z, bodies_z, applied_z)):
+            f.write(f"{k},{k * 1e-4},0,0,{p!r},0,0,{b!r},0,0,{a!r}\n")
+
+
+class MomentumCheck(unittest.TestCase):
+    # 10 % of a 1 mm^3 box holds bodies of 2500 kg/m^3 in water that accelerate to u_T.
+    rho_p, rho_f, phi, box, u_t = 2500.0, 1000.0, 0.1, 1e-9, 0.045
+    t = 1e-4 * np.arange(200)
+    u_p = -u_t * (1 - np.exp(-t / 5e-3))
+    bodies = rho_p * phi * box * u_p
+
+    def check(self, fluid, applied):
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "s_momentum.csv")
+            write_audit(path, fluid, self.bodies, applied)
+            change = study.momentum_change(path)
+        return change, study.momentum_warning("s", {"momentum_change": change})
+
+    def test_a_box_that_holds_its_momentum_with_rho_p_not_rho_f_does_not_warn(self):
+        fluid = -self.bodies  # the fluid outside the bodies carries the opposite momentum
+        # Its volume flux j = phi u_p + (fluid momentum) / (rho_f V) = phi u_p (1 - rho_p / rho_f)
+        # is 0.15 u_T at the end, which the former volume-flux test (> 0.1 u_T) called a loss.
+        j = self.phi * self.u_p + fluid / (self.rho_f * self.box)
+        self.assertAlmostEqual(j[-1] / self.u_t, 0.15 * (1 - np.exp(-199e-4 / 5e-3)), places=12)
+        change, warning = self.check(fluid, np.zeros_like(fluid))
+        self.assertLess(change, 1e-12)
+        self.assertIsNone(warning)
+
+    def test_an_applied_impulse_is_accounted_for(self):
+        applied = 1e-3 * self.bodies[-1] * np.arange(len(self.t))  # e.g. a controller's force
+        change, warning = self.check(-self.bodies + applied, applied)
+        self.assertLess(change, 1e-12)
+        self.assertIsNone(warning)
+
+    def test_a_lost_force_warns(self):
+        # The fluid keeps its momentum while the bodies gain theirs: no reaction reached it.
+        change, warning = self.check(np.zeros_like(self.bodies), np.zeros_like(self.bodies))
+        # From step 1 on (the audit's first coupled step).
+        self.assertAlmostEqual(change, 1 - self.bodies[1] / self.bodies[-1], places=12)
+        self.assertIn("WARNING the momentum of fluid + bodies changed by 0.98", warning)
+        self.assertNotIn("None", warning)
 
 
 if __name__ == "__main__":

@@ -9,7 +9,7 @@ Scene coupled(const std::string& coupling = "") {
   const std::string text = R"(
 time: {end: 1.0}
 fluid: {domain: [1, 1, 1], dx: 0.1, viscosity: 0.01, tau: 0.8}
-dem: {dt: 0.003}
+dem: {dt: 0.003, periodic: xyz}
 shapes: [{name: b, kind: sphere, diameter: 0.2}]
 bodies: [{shape: b, position: [0.5, 0.5, 0.5], density: 2000}]
 )" + coupling;

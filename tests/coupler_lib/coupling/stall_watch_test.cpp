@@ -34,18 +34,47 @@ TEST(StallWatch, AFixedLimitEndsAWaitWithTheSilentSideAndTheLastStep) {
   }
 }
 
-TEST(StallWatch, TheAutomaticLimitIsGenerousAndGrowsWithTheSlowestExchange) {
+TEST(StallWatch, TheAutomaticLimitAllowsTheSetUpThenAMinuteAndGrowsWithTheSlowestExchange) {
   StallWatch w(0, dem_peer());
+  // The waits of the first two exchanges hold the other program's set-up and first step.
+  for (int k = 0; k < StallWatch::kSetUpWaits; ++k) {
+    EXPECT_DOUBLE_EQ(w.limit_s(), StallWatch::kSetUpLimit);
+    w.begin(k / 2);
+    // A slow set-up (1.3 s here) does not lift the limit of the rest of the run.
+    if (k == 2) std::this_thread::sleep_for(std::chrono::milliseconds(1300));
+    EXPECT_NO_THROW(w.check());
+    w.end();
+  }
   EXPECT_DOUBLE_EQ(w.limit_s(), StallWatch::kAutomaticFloor);
-  w.begin(1);
-  w.end();
   w.begin(2);
   std::this_thread::sleep_for(std::chrono::milliseconds(20));
   w.end();
   // 50 x 20 ms is still below the floor.
   EXPECT_DOUBLE_EQ(w.limit_s(), StallWatch::kAutomaticFloor);
   w.begin(3);
+  std::this_thread::sleep_for(std::chrono::milliseconds(1300));
+  w.end();
+  // An exchange of at least 1.3 s: the limit is 50 x that, above the floor.
+  EXPECT_GE(w.limit_s(), StallWatch::kAutomaticFactor * 1.3);
+  EXPECT_GT(w.limit_s(), StallWatch::kAutomaticFloor);
+  w.begin(4);
   EXPECT_NO_THROW(w.check());
+}
+
+TEST(StallWatch, CheckStatesTheLimitAndTheCheckpointSize) {
+  Scene scene;
+  EXPECT_NE(describe_stall_limit(scene).find("600 s for the first two exchanges"),
+            std::string::npos);
+  EXPECT_NE(describe_stall_limit(scene).find("larger of 60 s and 50 x the slowest exchange"),
+            std::string::npos);
+  scene.fluid.emplace();
+  scene.fluid->cells = {512, 512, 512};
+  scene.coupling.checkpoint_interval = 1e-3;
+  // 512^3 x 19 x 8 B = 19 GiB.
+  EXPECT_NE(describe_stall_limit(scene).find("a fluid checkpoint holds 19 GiB"), std::string::npos)
+      << describe_stall_limit(scene);
+  scene.coupling.stall_timeout = 3;
+  EXPECT_EQ(describe_stall_limit(scene).rfind("stall limit: 3 s (coupling.stall_timeout)", 0), 0u);
 }
 
 }  // namespace

@@ -49,7 +49,7 @@ fluid:
   dx: 1.0e-4
   viscosity: 1.0e-6
   tau: 0.6
-dem: {}
+dem: {periodic: xyz}
 shapes:
   - {name: ball, kind: sphere, diameter: 8.0e-4}
   - {name: box, kind: cuboid, edges: [8.0e-4, 6.0e-4, 4.0e-4]}
