@@ -1,5 +1,6 @@
 #include "dem_app/coupling/coupled_dem.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <memory>
@@ -20,26 +21,11 @@
 
 namespace lbdem {
 
-namespace {
-
-// The DEM box must be periodic exactly where the fluid box is, or a body would leave one
-// side and not the other.
-void check_periodicity(const Scene& scene) {
-  for (int a = 0; a < 3; ++a) {
-    if (scene.dem->periodic[a] != scene.fluid->periodic(a))
-      throw SceneError(scene.file + ": dem.periodic and fluid.boundaries disagree along " +
-                       axis_name(a) + ": both sides must be periodic on the same axes");
-  }
-}
-
-}  // namespace
-
 int run_coupled_dem(AppContext& ctx) {
   const Scene& scene = ctx.scene;
   const bool replay = !ctx.cli.replay.empty();
   World world;
   if (!replay) world = connect(ctx);
-  check_periodicity(scene);
 
   DemSetup setup = make_dem_setup(scene, build_scene_shapes(scene), true);
   std::filesystem::path dir(setup.params.output.directory);
@@ -173,6 +159,10 @@ int run_coupled_dem(AppContext& ctx) {
   session.count("bodies_owned", double(owned.size()));
   session.count("atoms", double(engine.local_atoms()));
   session.count("ghost_atoms", double(engine.ghost_atoms()));
+  const LoadTraffic& traffic = engine.load_traffic();
+  const double exchanges = double(std::max<long long>(traffic.exchanges, 1));
+  session.count("load_bytes_per_step", double(traffic.bytes) / exchanges);
+  session.count("load_messages_per_step", double(traffic.messages) / exchanges);
   if (trace) {
     session.output(trace->path());
     session.output(snapshots->xdmf_path());
