@@ -238,7 +238,8 @@ void CouplingSession::report_work(const CouplingTimes& coupler) {
   s.imbalance_of = "busy_s_per_step";
   s.outputs = outputs_;
   const std::string path = run_summary_path(scene_, side_.side);
-  std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+  if (const auto dir = std::filesystem::path(path).parent_path(); !dir.empty())
+    std::filesystem::create_directories(dir);
   write_file_atomically(path, run_summary_json(s));
   side_.log->info("run summary: {}", path);
 }
