@@ -1,13 +1,19 @@
 #pragma once
-// The error classes of the whole project, below every layer so that any layer can throw them
-// and the common main (coupler_lib/app/run_app.hpp) can tell them apart. Each message is
+// The error classes and exit statuses of the whole project, below every layer so that any
+// layer can throw them and the common main (coupler_lib/app/run_app.hpp) can tell them apart. Each message is
 // complete and meant for the user as it is (file, key or rank, and what was expected).
 #include <stdexcept>
 
 namespace lbdem {
 
-// Exit status of either program when a stability watch stopped the run (1 is any error).
+// The exit statuses of both programs, in one place (docs/user-guide.md, "Running"):
+//   0  done (or stopped on request with a checkpoint written)
+//   1  any error: a bad scene, a failed partner, an I/O error (the message says which)
+//   3  a stability watch stopped the run (diagnosis and last good state written)
+//   4  fluid_app's validation: the error is above fluid.validation.tolerance
+inline constexpr int kExitError = 1;
 inline constexpr int kExitUnstable = 3;
+inline constexpr int kExitValidationFailed = 4;
 
 // Bad shape input (STL files, clump files, shape parameters).
 class ShapeError : public std::runtime_error {

@@ -2,6 +2,7 @@
 
 #include "coupler_lib/coupling/schedule.hpp"
 #include "fluid_app/output/run_watch.hpp"
+#include "fluid_app/parallel/balance.hpp"
 
 #include <spdlog/fmt/fmt.h>
 
@@ -42,12 +43,20 @@ void log_fluid_setup(const AppContext& ctx, const FluidParams& p) {
 }
 
 template <class T>
-FluidRun<T>::FluidRun(AppContext& ctx) : ctx_(ctx), params_(*ctx.scene.fluid) {
+FluidRun<T>::FluidRun(AppContext& ctx, const std::vector<Shape>& shapes)
+    : ctx_(ctx), params_(*ctx.scene.fluid) {
   log_fluid_setup(ctx, params_);
-  solver_ = std::make_unique<FluidSolver<T>>(params_, ctx.side_comm);
+  const bool balanced =
+      params_.decomposition == DecompositionKind::balanced && !ctx.scene.bodies.empty();
+  solver_ = std::make_unique<FluidSolver<T>>(
+      params_, ctx.side_comm, std::array<int, 3>{0, 0, 0},
+      balanced ? body_work_weights(params_, ctx.scene.bodies, shapes)
+               : std::array<std::vector<double>, 3>{});
   const auto& d = solver_->decomposition();
-  ctx.log->info("decomposition {} x {} x {} ranks; kernel moves {} B per cell update", d.dims()[0],
-                d.dims()[1], d.dims()[2], FluidSolver<T>::bytes_per_cell_update(false));
+  ctx.log->info("decomposition {} x {} x {} ranks ({}); kernel moves {} B per cell update",
+                d.dims()[0], d.dims()[1], d.dims()[2],
+                balanced ? "balanced by the initial bodies' work" : "regular",
+                FluidSolver<T>::bytes_per_cell_update(false));
   total_steps_ = step_count(ctx.scene.time.end, params_.units.dt);
   ctx.log->info("{} steps to t = {} s", total_steps_, ctx.scene.time.end);
   progress_ =

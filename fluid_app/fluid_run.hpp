@@ -18,6 +18,7 @@
 
 #include "coupler_lib/app/progress.hpp"
 #include "coupler_lib/app/run_app.hpp"
+#include "coupler_lib/geometry/shape.hpp"
 #include "fluid_app/fluid_solver.hpp"
 
 namespace lbdem {
@@ -33,7 +34,9 @@ class FluidRun {
   using Observer = std::function<void(const FluidSolver<T>&, const StepInfo&)>;
 
   // Collective. Logs the derived numbers, throws SceneError if the scene is out of range.
-  explicit FluidRun(AppContext& ctx);
+  // `shapes`: the scene's shape catalogue, for fluid.decomposition: balanced (the initial
+  // bodies' work); empty for a scene without bodies.
+  explicit FluidRun(AppContext& ctx, const std::vector<Shape>& shapes = {});
 
   FluidSolver<T>& solver() { return *solver_; }
   const FluidParams& params() const { return params_; }

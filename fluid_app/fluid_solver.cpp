@@ -76,9 +76,10 @@ void run_kernel(Forcing m, bool sum, const KernelArgs<T>& a, const CellRange& r,
 template <class T>
 class FluidSolverImpl {
  public:
-  FluidSolverImpl(const FluidParams& p, MPI_Comm comm, std::array<int, 3> dims)
+  FluidSolverImpl(const FluidParams& p, MPI_Comm comm, std::array<int, 3> dims,
+                  const std::array<std::vector<double>, 3>& weights)
       : params(p),
-        dec(comm, p.cells, {p.periodic(0), p.periodic(1), p.periodic(2)}, dims),
+        dec(comm, p.cells, {p.periodic(0), p.periodic(1), p.periodic(2)}, dims, weights),
         box(dec.box()),
         stride(pad(box.cells_with_ghosts())),
         f(stride * d3q19::Q),
@@ -276,8 +277,9 @@ class FluidSolverImpl {
 };
 
 template <class T>
-FluidSolver<T>::FluidSolver(const FluidParams& params, MPI_Comm comm, std::array<int, 3> dims)
-    : impl_(std::make_unique<FluidSolverImpl<T>>(params, comm, dims)) {}
+FluidSolver<T>::FluidSolver(const FluidParams& params, MPI_Comm comm, std::array<int, 3> dims,
+                            const std::array<std::vector<double>, 3>& weights)
+    : impl_(std::make_unique<FluidSolverImpl<T>>(params, comm, dims, weights)) {}
 
 template <class T>
 FluidSolver<T>::~FluidSolver() = default;

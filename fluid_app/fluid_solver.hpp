@@ -50,7 +50,9 @@ class FluidSolver {
  public:
   // Collective over `comm` (the side communicator of fluid_app). Starts at rest, rho = 1.
   // `dims` forces the process grid (0 = automatic), for tests.
-  FluidSolver(const FluidParams& params, MPI_Comm comm, std::array<int, 3> dims = {0, 0, 0});
+  // `weights`: the work per slice of cells along each axis (balance.hpp) for a balanced split.
+  FluidSolver(const FluidParams& params, MPI_Comm comm, std::array<int, 3> dims = {0, 0, 0},
+              const std::array<std::vector<double>, 3>& weights = {});
   ~FluidSolver();
   FluidSolver(const FluidSolver&) = delete;
   FluidSolver& operator=(const FluidSolver&) = delete;

@@ -31,14 +31,26 @@ class RunningApp {
 };
 
 // Which application of an MPMD launch this process belongs to (0 when launched alone),
-// and how many applications there are.
-void appnum(int& mine, int& count) {
+// and how many applications there are. mpirun's MPMD syntax numbers the applications
+// (MPI_APPNUM); a launcher that starts several programs as one application (Slurm's
+// `srun --multi-prog`, docs/user-guide.md "Clusters") leaves every rank at 0, and then the
+// program's side tells them apart: the fluid is application 0, the DEM application 1.
+void appnum(const std::string& side, int& mine, int& count) {
   int flag = 0;
   int* value = nullptr;
   MPI_Comm_get_attr(MPI_COMM_WORLD, MPI_APPNUM, &value, &flag);
   mine = flag && value ? *value : 0;
-  MPI_Allreduce(&mine, &count, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-  count += 1;
+  int highest = 0;
+  MPI_Allreduce(&mine, &highest, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  const int by_side = side == "dem" ? 1 : 0;
+  int sides[2] = {by_side, -by_side}, range[2] = {0, 0};  // max side index, -min side index
+  MPI_Allreduce(sides, range, 2, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  const bool two_sides = range[0] == 1 && range[1] == 0;
+  if (highest == 0 && two_sides) {
+    mine = by_side;
+    highest = 1;
+  }
+  count = highest + 1;
 }
 
 [[noreturn]] void abort_all(const std::string& who, const std::string& what) {
@@ -111,7 +123,7 @@ int run_app(int argc, char** argv, const AppInfo& info,
   ctx.side = info.side;
   ctx.program = info.program;
   MPI_Comm_rank(MPI_COMM_WORLD, &ctx.world_rank);
-  appnum(ctx.app, ctx.app_count);
+  appnum(info.side, ctx.app, ctx.app_count);
   MPI_Comm_split(MPI_COMM_WORLD, ctx.app, ctx.world_rank, &ctx.side_comm);
   MPI_Comm_rank(ctx.side_comm, &ctx.rank);
   MPI_Comm_size(ctx.side_comm, &ctx.size);

@@ -215,6 +215,10 @@ void CouplingSession::report_work(const CouplingTimes& coupler) {
   }
   side_.log->info("load imbalance ({}): {:.3f} (max / mean of the busy time per step)", label,
                   max_over_mean(table.per_rank[0]));
+  for (std::size_t c = 0; c < table.names.size(); ++c)
+    if (table.names[c] == "weighted_work")
+      side_.log->info("load imbalance ({}): {:.3f} (max / mean of the weighted work)", label,
+                      max_over_mean(table.per_rank[c]));
   RunSummary s;
   s.program = side_.program;
   s.side = side_.side;

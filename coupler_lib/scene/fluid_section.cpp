@@ -129,6 +129,18 @@ FluidParams parse_fluid(Section& s) {
                      "or by momentum exchange") == "momentum_exchange"
                 ? LoadMethod::momentum_exchange
                 : LoadMethod::penalization;
+  p.decomposition =
+      s.choice("decomposition", "regular", {"regular", "balanced"},
+               "how the lattice is split over the fluid ranks: regular (equal blocks) or "
+               "balanced (the cuts of each axis placed so that every rank gets the same work of "
+               "the initial bodies; docs/scaling.md)") == "balanced"
+          ? DecompositionKind::balanced
+          : DecompositionKind::regular;
+  p.covered_cell_weight = s.get<double>(
+      "covered_cell_weight", 8.0,
+      "work of a lattice cell a body covers (band and interior: porosity, penalization, load "
+      "sums) in plain fluid cells, for decomposition: balanced (docs/scaling.md)",
+      Bounds::at_least(1.0));
   {
     auto b = s.section_or_defaults("boundaries", "per-face boundary conditions");
     for (int f = 0; f < 6; ++f) p.faces[f] = parse_face(b, f);

@@ -16,7 +16,9 @@
 //     mean_velocity_control: {target: [0, 0, 0], gain: 0.5, integral_gain: 0.05,
 //                             interval: 0, feed_forward: true}
 //     loads: penalization             # or momentum_exchange (docs/method-loads.md)
-//     boundaries:
+//     decomposition: regular          # or balanced: cuts placed by the bodies' work
+//     (docs/scaling.md) covered_cell_weight: 8          # cost of a cell a body covers, in fluid
+//     cells (balanced) boundaries:
 //       x_min: periodic               # periodic faces must be paired
 //       x_max: periodic
 //       y_min: {type: pressure, pressure: 0}   # Pa, gauge
@@ -33,6 +35,11 @@
 namespace lbdem {
 
 enum class FaceType { periodic, wall, moving_wall, pressure };
+
+// How the fluid lattice is split over the fluid ranks (fluid_app/parallel/decomposition.hpp):
+// equal blocks, or a rectilinear grid of blocks whose cuts balance the weighted work of the
+// initial bodies (cells a body covers cost covered_cell_weight fluid cells).
+enum class DecompositionKind { regular, balanced };
 
 // One face of the box. Faces are indexed 2*axis + side (side 0 = min, 1 = max):
 // x_min, x_max, y_min, y_max, z_min, z_max.
@@ -84,6 +91,8 @@ struct FluidParams {
   std::array<double, 3> body_force{};  // m/s^2, uniform acceleration of the fluid
   MeanVelocityControl control;
   LoadMethod loads = LoadMethod::penalization;
+  DecompositionKind decomposition = DecompositionKind::regular;
+  double covered_cell_weight = 8;       // work of a covered cell / a fluid cell (balanced split)
   std::array<FaceBoundary, 6> faces{};  // default: triply periodic
   UnitConverter units;
   FluidOutputParams output;  // fluid.output, fluid.stability, fluid.validation

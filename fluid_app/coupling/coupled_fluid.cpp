@@ -23,6 +23,7 @@
 #include "fluid_app/fluid_run.hpp"
 #include "fluid_app/hlbm/body_field.hpp"
 #include "fluid_app/output/run_watch.hpp"
+#include "fluid_app/parallel/balance.hpp"
 
 namespace lbdem {
 
@@ -83,7 +84,8 @@ void restore_covered(hlbm::BodyField<T>& bodies, const std::vector<CoveredRecord
 // This rank's work at the end of the run: its cells, those a body covers (d < 1: the band and
 // the interiors, where the porous kernel and the load sums run) and the bodies in its table.
 template <class T>
-void count_work(CouplingSession& session, const FluidSolver<T>& solver) {
+void count_work(CouplingSession& session, const FluidSolver<T>& solver,
+                double covered_cell_weight) {
   const LocalBox& box = solver.box();
   const PorousField<T>& field = solver.porous();
   double covered = 0, solid = 0;
@@ -99,6 +101,8 @@ void count_work(CouplingSession& session, const FluidSolver<T>& solver) {
   session.count("covered_cells", covered);
   session.count("solid_cells", solid);
   session.count("bodies_in_table", double(field.bodies.size()));
+  session.count("weighted_work",
+                weighted_work(double(box.interior_cells()), covered, covered_cell_weight));
 }
 
 template <class T>
@@ -117,7 +121,7 @@ int run_typed(AppContext& ctx) {
         "cells, so the fluid sees every surface moved inward by that much (docs/method.md)",
         scene.fluid->tau, scene.fluid->porosity_lookup,
         *band_radius_excess_cells(scene.fluid->tau, scene.fluid->porosity_lookup));
-  FluidRun<T> run(ctx);
+  FluidRun<T> run(ctx, shapes);
   FluidSolver<T>& solver = run.solver();
   int solver_rank = 0;
   MPI_Comm_rank(solver.comm(), &solver_rank);
@@ -220,7 +224,7 @@ int run_typed(AppContext& ctx) {
     });
   }
   if (session.end() == SessionEnd::completed) feed.finish(session.step());
-  count_work(session, solver);
+  count_work(session, solver, scene.fluid->covered_cell_weight);
   const int rc = watch.finish();
   const int end = session.finish(coupler->times());
   if (end != 0) return end;

@@ -15,6 +15,7 @@
 #include <memory>
 #include <optional>
 
+#include "coupler_lib/errors.hpp"
 #include "fluid_app/fluid_run.hpp"
 #include "fluid_app/output/fluid_output.hpp"
 #include "fluid_app/output/macro_fields.hpp"
@@ -23,8 +24,6 @@
 
 namespace lbdem {
 
-// Exit codes of fluid_app beyond 0 (done) and 1 (bad scene or error).
-inline constexpr int kExitValidationFailed = 4;  // error above fluid.validation.tolerance
 
 // Density and physical velocity of the solver's interior cells, in double precision.
 template <class T>

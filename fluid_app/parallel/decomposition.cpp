@@ -12,8 +12,31 @@ Extent block_extent(int n, int p, int r) {
   return {base + (r < extra ? 1 : 0), r * base + (r < extra ? r : extra)};
 }
 
+Extent weighted_extent(const std::vector<double>& w, int p, int r) {
+  const int n = static_cast<int>(w.size());
+  std::vector<double> cumulative(w.size() + 1, 0.0);
+  for (int i = 0; i < n; ++i)
+    cumulative[std::size_t(i) + 1] = cumulative[std::size_t(i)] + w[std::size_t(i)];
+  // Cut k (1..p-1) at the first cell boundary where the cumulative weight reaches k/p of the
+  // total, kept at least one cell from its neighbours so that no block is empty.
+  auto cut = [&](int k) {
+    if (k <= 0) return 0;
+    if (k >= p) return n;
+    const double target = cumulative.back() * double(k) / double(p);
+    const int at =
+        int(std::lower_bound(cumulative.begin(), cumulative.end(), target) - cumulative.begin());
+    return std::clamp(at, k, n - (p - k));
+  };
+  // Cuts computed in order so that each is at least one past the previous one.
+  int lo = 0;
+  for (int k = 1; k <= r; ++k) lo = std::max(cut(k), lo + 1);
+  int hi = r + 1 >= p ? n : std::max(cut(r + 1), lo + 1);
+  return {hi - lo, lo};
+}
+
 Decomposition::Decomposition(MPI_Comm comm, std::array<int, 3> global, std::array<bool, 3> periodic,
-                             std::array<int, 3> dims)
+                             std::array<int, 3> dims,
+                             const std::array<std::vector<double>, 3>& weights)
     : periodic_(periodic) {
   int size = 1;
   MPI_Comm_size(comm, &size);
@@ -43,7 +66,9 @@ Decomposition::Decomposition(MPI_Comm comm, std::array<int, 3> global, std::arra
   MPI_Cart_coords(cart_, rank_, 3, coords_.data());
   box_.global = global;
   for (int a = 0; a < 3; ++a) {
-    const Extent e = block_extent(global[a], dims_[a], coords_[a]);
+    const bool weighted = weights[a].size() == std::size_t(global[a]);
+    const Extent e = weighted ? weighted_extent(weights[a], dims_[a], coords_[a])
+                              : block_extent(global[a], dims_[a], coords_[a]);
     box_.n[a] = e.count;
     box_.offset[a] = e.offset;
   }

@@ -8,9 +8,15 @@
 // sizes are fine: the first N % p blocks of an axis get one cell more. Every rank knows the rank of
 // each of its 26 neighbours (MPI_PROC_NULL across a non-periodic face), periodic images included (a
 // rank can be its own neighbour).
+//
+// With axis weights (balanced_weights in balance.hpp) the grid of blocks stays rectilinear, so
+// every face is shared by exactly two blocks as before, but the cuts of each axis are placed so
+// that every slab of blocks along that axis holds the same weight: a settled bed or a dense
+// cloud of bodies is split finer where its work is.
 #include <mpi.h>
 
 #include <array>
+#include <vector>
 
 #include "fluid_app/lattice/local_box.hpp"
 
@@ -20,8 +26,10 @@ namespace lbdem {
 class Decomposition {
  public:
   // Collective over `comm`. `dims` entries that are 0 are chosen by MPI_Dims_create.
+  // `weights`: per axis, the work of each slice of cells (empty: equal blocks).
   Decomposition(MPI_Comm comm, std::array<int, 3> global, std::array<bool, 3> periodic,
-                std::array<int, 3> dims = {0, 0, 0});
+                std::array<int, 3> dims = {0, 0, 0},
+                const std::array<std::vector<double>, 3>& weights = {});
   ~Decomposition();
   Decomposition(const Decomposition&) = delete;
   Decomposition& operator=(const Decomposition&) = delete;
@@ -55,5 +63,9 @@ struct Extent {
   int offset = 0;
 };
 Extent block_extent(int n, int p, int r);
+
+// Block `r` of `p` along an axis whose slices weigh `w` (one entry per cell): the cuts split
+// the cumulative weight into p equal parts, each block at least one cell.
+Extent weighted_extent(const std::vector<double>& w, int p, int r);
 
 }  // namespace lbdem
