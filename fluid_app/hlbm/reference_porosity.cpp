@@ -3,7 +3,9 @@
 #include "fluid_app/lattice/d3q19.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 
@@ -47,6 +49,34 @@ ReferencePorosity::ReferencePorosity(const Voxels& voxels) : h_(voxels.h) {
         // fluid / 19 is exactly 1 (or 0) when all 19 points are wholly fluid (or solid).
         smooth_[idx] = static_cast<float>(fluid / 19.0);
       }
+
+  // Block classes: running minimum and maximum of the fluid fraction over 5 voxels along each
+  // axis in turn (outside the padded lattice: 1).
+  std::vector<float> lo = fluid_, hi = fluid_;
+  const std::array<std::size_t, 3> stride = {1, static_cast<std::size_t>(m_[0]),
+                                             static_cast<std::size_t>(m_[0]) * m_[1]};
+  for (int a = 0; a < 3; ++a) {
+    const std::vector<float> lo0 = lo, hi0 = hi;
+    idx = 0;
+    for (int k = 0; k < m_[2]; ++k)
+      for (int j = 0; j < m_[1]; ++j)
+        for (int i = 0; i < m_[0]; ++i, ++idx) {
+          const int l = a == 0 ? i : a == 1 ? j : k;
+          for (int s = -2; s <= 2; ++s) {
+            if (l + s < 0 || l + s >= m_[a]) {
+              hi[idx] = std::max(hi[idx], 1.0f);
+              continue;
+            }
+            const std::size_t o = static_cast<std::size_t>(
+                static_cast<std::ptrdiff_t>(idx) + s * static_cast<std::ptrdiff_t>(stride[a]));
+            lo[idx] = std::min(lo[idx], lo0[o]);
+            hi[idx] = std::max(hi[idx], hi0[o]);
+          }
+        }
+  }
+  block_.resize(fluid_.size());
+  for (std::size_t v = 0; v < fluid_.size(); ++v)
+    block_[v] = lo[v] == 1.0f ? Block::fluid : hi[v] == 0.0f ? Block::solid : Block::mixed;
 
   for (int k = 0; k < n[2]; ++k)
     for (int j = 0; j < n[1]; ++j)

@@ -22,6 +22,10 @@
 //   (0 < d < 1) is narrower than the trilinear one.
 #include <Eigen/Dense>
 
+#if defined(__AVX2__)
+#include <immintrin.h>
+#endif
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -33,6 +37,13 @@
 namespace lbdem::hlbm {
 
 enum class PorosityLookup { trilinear, nearest };
+
+// The nearest lookup's 19 stencil offsets R^T c_i (reference-lattice units) as it reads them:
+// one array per axis, padded to 20 with a zero offset, so the mapping of all points vectorizes.
+struct NearestStencil {
+  static constexpr int kPoints = 19, kPadded = 20;
+  alignas(32) std::array<double, kPadded> x{}, y{}, z{};
+};
 
 // "trilinear" or "nearest" (the scene's fluid.porosity_lookup, already validated).
 PorosityLookup porosity_lookup_from(const std::string& name);
@@ -47,7 +58,11 @@ class ReferencePorosity {
   // The paper's lookup: the fraction of the 19 points ref + stencil[i] whose nearest voxel is
   // fluid; stencil[i] is the lattice-frame offset h c_i in reference-lattice coordinates
   // (R^T c_i). Exactly 0 or 1 when all 19 agree.
-  double nearest(const Eigen::Vector3d& ref, const std::array<Eigen::Vector3d, 19>& stencil) const;
+  double nearest(const Eigen::Vector3d& ref, const NearestStencil& stencil) const;
+
+  // Nearest voxel of a point (reference-lattice coordinates, see nearest()) and whether the
+  // voxels within two of it (Chebyshev distance) are all fluid (1), all solid (0), or mixed.
+  enum class Block : std::uint8_t { mixed, fluid, solid };
 
   // Reference-lattice coordinates of a shape-frame point p (m): ref = p / h + shift().
   double spacing() const { return h_; }
@@ -65,6 +80,9 @@ class ReferencePorosity {
   std::array<int, 3> m_{0, 0, 0};  // padded extents
   std::vector<float> smooth_;      // averaged porosity, padded lattice, x fastest
   std::vector<float> fluid_;       // fluid fraction of each voxel (1 - fill), same lattice
+  // Per voxel: are the voxels within Chebyshev distance 2 (outside the lattice: fluid) all
+  // fluid or all solid? Every stencil point of a node lies within 2 of the node's nearest voxel.
+  std::vector<Block> block_;
   double support_radius_ = 0;
   double surface_radius_ = 0;
 
@@ -101,20 +119,69 @@ inline double ReferencePorosity::at(const Eigen::Vector3d& ref) const {
   return detail::lerp(detail::lerp(c00, c10, ty), detail::lerp(c01, c11, ty), tz);
 }
 
+// The stencil offsets have components |o_a| <= |c_i| = sqrt(2) < 2 voxels, so each point's
+// nearest voxel lies within Chebyshev distance 2 of the node's own nearest voxel: where that
+// block is uniform the 19 points all read the same value and the sum below is exactly 0 or 19.
+// Cells beyond the band (most of the update's candidates) cost one load instead of 19; the
+// result is the 19-point sum's bit for bit.
 inline double ReferencePorosity::nearest(const Eigen::Vector3d& ref,
-                                         const std::array<Eigen::Vector3d, 19>& stencil) const {
-  float fluid = 0;
-  for (const Eigen::Vector3d& o : stencil) {
-    const double x = ref.x() + o.x() + 0.5, y = ref.y() + o.y() + 0.5, z = ref.z() + o.z() + 0.5;
-    if (!(x >= 0 && y >= 0 && z >= 0 && x < m_[0] && y < m_[1] && z < m_[2])) {
-      ++fluid;  // off the lattice: fluid
-      continue;
-    }
-    const std::size_t i = static_cast<std::size_t>(x), j = static_cast<std::size_t>(y),
-                      k = static_cast<std::size_t>(z);
-    fluid +=
-        fluid_[i + static_cast<std::size_t>(m_[0]) * (j + static_cast<std::size_t>(m_[1]) * k)];
+                                         const NearestStencil& stencil) const {
+  const std::size_t sy = static_cast<std::size_t>(m_[0]);
+  const std::size_t sz = sy * static_cast<std::size_t>(m_[1]);
+  {
+    const double x = ref.x() + 0.5, y = ref.y() + 0.5, z = ref.z() + 0.5;
+    // Outside the padded lattice every point falls outside it or in its two fluid layers.
+    if (!(x >= 0 && y >= 0 && z >= 0 && x < m_[0] && y < m_[1] && z < m_[2])) return 1.0;
+    const Block b = block_[static_cast<std::size_t>(x) + sy * static_cast<std::size_t>(y) +
+                           sz * static_cast<std::size_t>(z)];
+    if (b == Block::fluid) return 1.0;
+    if (b == Block::solid) return 0.0;
   }
+  // Voxel index of every point, four at a time where AVX2 is there (the same additions and
+  // comparisons as the scalar loop); a point off the lattice reads voxel 0, a fluid voxel of the
+  // padding.
+  alignas(32) std::array<std::int32_t, NearestStencil::kPadded> voxel;
+  const auto iy = static_cast<std::int32_t>(sy), iz = static_cast<std::int32_t>(sz);
+#if defined(__AVX2__)
+  {
+    const __m256d half = _mm256_set1_pd(0.5), zero = _mm256_setzero_pd();
+    const __m256d rx = _mm256_set1_pd(ref.x()), ry = _mm256_set1_pd(ref.y()),
+                  rz = _mm256_set1_pd(ref.z());
+    const __m256d mx = _mm256_set1_pd(m_[0]), my = _mm256_set1_pd(m_[1]),
+                  mz = _mm256_set1_pd(m_[2]);
+    const __m128i vy = _mm_set1_epi32(iy), vz = _mm_set1_epi32(iz);
+    for (int g = 0; g < NearestStencil::kPadded; g += 4) {
+      const __m256d x = _mm256_add_pd(_mm256_add_pd(rx, _mm256_load_pd(&stencil.x[g])), half);
+      const __m256d y = _mm256_add_pd(_mm256_add_pd(ry, _mm256_load_pd(&stencil.y[g])), half);
+      const __m256d z = _mm256_add_pd(_mm256_add_pd(rz, _mm256_load_pd(&stencil.z[g])), half);
+      const __m256d on = _mm256_and_pd(
+          _mm256_and_pd(
+              _mm256_and_pd(_mm256_cmp_pd(x, zero, _CMP_GE_OQ), _mm256_cmp_pd(x, mx, _CMP_LT_OQ)),
+              _mm256_and_pd(_mm256_cmp_pd(y, zero, _CMP_GE_OQ), _mm256_cmp_pd(y, my, _CMP_LT_OQ))),
+          _mm256_and_pd(_mm256_cmp_pd(z, zero, _CMP_GE_OQ), _mm256_cmp_pd(z, mz, _CMP_LT_OQ)));
+      const __m128i i = _mm256_cvttpd_epi32(_mm256_and_pd(x, on));
+      const __m128i j = _mm256_cvttpd_epi32(_mm256_and_pd(y, on));
+      const __m128i k = _mm256_cvttpd_epi32(_mm256_and_pd(z, on));
+      const __m128i v =
+          _mm_add_epi32(_mm_add_epi32(i, _mm_mullo_epi32(j, vy)), _mm_mullo_epi32(k, vz));
+      _mm_store_si128(reinterpret_cast<__m128i*>(&voxel[static_cast<std::size_t>(g)]), v);
+    }
+  }
+#else
+  for (std::size_t i = 0; i < NearestStencil::kPadded; ++i) {
+    const double x = ref.x() + stencil.x[i] + 0.5;
+    const double y = ref.y() + stencil.y[i] + 0.5;
+    const double z = ref.z() + stencil.z[i] + 0.5;
+    const bool on = x >= 0 && y >= 0 && z >= 0 && x < m_[0] && y < m_[1] && z < m_[2];
+    voxel[i] = on ? static_cast<std::int32_t>(x) + iy * static_cast<std::int32_t>(y) +
+                        iz * static_cast<std::int32_t>(z)
+                  : 0;
+  }
+#endif
+  // Summed in stencil order: the same bits as the point-by-point sum.
+  float fluid = 0;
+  for (int i = 0; i < NearestStencil::kPoints; ++i)
+    fluid += fluid_[static_cast<std::size_t>(voxel[static_cast<std::size_t>(i)])];
   return fluid / 19.0f;  // as the averaged lattice: exactly 0 or 1 at the ends
 }
 
