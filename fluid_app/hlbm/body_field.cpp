@@ -21,12 +21,9 @@ namespace {
 // Larger moves re-embed the body from scratch.
 constexpr double kMaxIncrementalMove = 0.5;
 
-// Local coordinates of a cell index with 32-bit divisions (the indices fit 32 bits, checked
-// in the constructor); cheaper than LocalBox::coords on the per-cell paths.
-std::array<int, 3> coords32(const LocalBox& b, std::uint32_t cell) {
-  const auto sx = static_cast<std::uint32_t>(b.sx()), sy = static_cast<std::uint32_t>(b.sy());
-  const std::uint32_t q = cell / sx, z = q / sy;
-  return {static_cast<int>(cell - q * sx), static_cast<int>(q - z * sy), static_cast<int>(z)};
+std::array<std::uint16_t, 3> local(int x, int y, int z) {
+  return {static_cast<std::uint16_t>(x), static_cast<std::uint16_t>(y),
+          static_cast<std::uint16_t>(z)};
 }
 
 }  // namespace
@@ -36,7 +33,9 @@ BodyField<T>::BodyField(std::span<const Shape> shapes, const Subdomain& sub,
                         const LatticeFrame& frame, PorousField<T>& field, PorosityLookup lookup)
     : lookup_(lookup), sub_(sub), frame_(frame), field_(field) {
   const auto cells = static_cast<std::size_t>(sub.box.cells_with_ghosts());
-  if (cells >= std::numeric_limits<std::uint32_t>::max())
+  if (cells >= std::numeric_limits<std::uint32_t>::max() ||
+      std::max({sub.box.n[0], sub.box.n[1], sub.box.n[2]}) + 1 >
+          std::numeric_limits<std::uint16_t>::max())
     throw std::invalid_argument("BodyField: local box too large for 32-bit cell indices");
   if (!(frame.units.dx > 0) || !(frame.units.dt > 0))
     throw std::invalid_argument("BodyField: unit converter without a positive dx and dt");
@@ -169,7 +168,7 @@ void BodyField<T>::scan(std::int32_t slot, std::vector<BandCell>& band, UpdateSt
         const auto c = static_cast<std::uint32_t>(sub_.box.index(x, y, z));
         const float d = evaluate(slot, c, x, y, z, stats);
         if (d > 0.0f && d < 1.0f) {
-          band.push_back({c, d});
+          band.push_back({c, d, local(x, y, z)});
           touched_.push_back(c);
         }
       }
@@ -250,12 +249,13 @@ void BodyField<T>::follow_band(std::int32_t slot, std::vector<BandCell>& band, U
   const auto words = static_cast<std::size_t>(w.words);
 
   // Evaluates window cell (i, row) unless done; a band cell joins the band and the frontier.
-  auto visit = [&](std::size_t i, std::size_t row) {
+  auto visit = [&](std::size_t i, std::size_t jy, std::size_t jz) {
+    const std::size_t row = jy + ny * jz;
     const std::size_t word = row * words + i / 64;
     const std::uint64_t bit = std::uint64_t{1} << (i % 64);
     if (w.evaluated[word] & bit) return;
     w.evaluated[word] |= bit;
-    const int x = w.l[0][i], y = w.l[1][row % ny], z = w.l[2][row / ny];
+    const int x = w.l[0][i], y = w.l[1][jy], z = w.l[2][jz];
     const float d = evaluate(slot, static_cast<std::uint32_t>(box.index(x, y, z)), x, y, z, stats);
     if (d > 0.0f && d < 1.0f) {
       w.d[row * nx + i] = d;
@@ -273,15 +273,11 @@ void BodyField<T>::follow_band(std::int32_t slot, std::vector<BandCell>& band, U
   // outermost layer where the support reaches it.
   for (const BandCell& b : t.band) {
     touched_.push_back(b.cell);
-    const auto l = coords32(box, b.cell);
-    const int i = w.inv[0][static_cast<std::size_t>(l[0])],
-              j = w.inv[1][static_cast<std::size_t>(l[1])],
-              k = w.inv[2][static_cast<std::size_t>(l[2])];
+    const int i = w.inv[0][b.l[0]], j = w.inv[1][b.l[1]], k = w.inv[2][b.l[2]];
     if (i < 0 || j < 0 || k < 0)
       throw std::logic_error("BodyField: a band cell of body " + std::to_string(t.id) +
                              " lies beyond its reach after an incremental move");
-    visit(static_cast<std::size_t>(i),
-          static_cast<std::size_t>(j) + ny * static_cast<std::size_t>(k));
+    visit(static_cast<std::size_t>(i), static_cast<std::size_t>(j), static_cast<std::size_t>(k));
   }
   const std::array<std::size_t, 3> n = {nx, ny, nz};
   for (int a = 0; a < 3; ++a)
@@ -295,7 +291,7 @@ void BodyField<T>::follow_band(std::int32_t slot, std::vector<BandCell>& band, U
           wi[static_cast<std::size_t>(a)] = static_cast<std::size_t>(wf);
           wi[static_cast<std::size_t>(b)] = ib;
           wi[static_cast<std::size_t>(c)] = ic;
-          visit(wi[0], wi[1] + ny * wi[2]);
+          visit(wi[0], wi[1], wi[2]);
         }
     }
 
@@ -332,11 +328,12 @@ void BodyField<T>::follow_band(std::int32_t slot, std::vector<BandCell>& band, U
     }
     for (std::size_t row : w.candidate_rows) {
       w.listed[row] = 0;
+      const std::size_t jy = row % ny, jz = row / ny;
       for (std::size_t k = 0; k < words; ++k) {
         std::uint64_t todo = w.candidates[row * words + k] & ~w.evaluated[row * words + k];
         w.candidates[row * words + k] = 0;
         while (todo) {
-          visit(64 * k + static_cast<std::size_t>(std::countr_zero(todo)), row);
+          visit(64 * k + static_cast<std::size_t>(std::countr_zero(todo)), jy, jz);
           todo &= todo - 1;
         }
       }
@@ -350,7 +347,7 @@ void BodyField<T>::follow_band(std::int32_t slot, std::vector<BandCell>& band, U
       for (std::uint64_t bits = w.band[row * words + k]; bits; bits &= bits - 1) {
         const std::size_t i = 64 * k + static_cast<std::size_t>(std::countr_zero(bits));
         const auto c = static_cast<std::uint32_t>(box.index(w.l[0][i], y, z));
-        band.push_back({c, w.d[row * nx + i]});
+        band.push_back({c, w.d[row * nx + i], local(w.l[0][i], y, z)});
         touched_.push_back(c);
       }
   }

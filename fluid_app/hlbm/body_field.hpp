@@ -109,6 +109,7 @@ class BodyField {
   struct BandCell {
     std::uint32_t cell;
     float d;
+    std::array<std::uint16_t, 3> l;  // local coordinates (no index division to recover them)
   };
   struct Tracked {
     std::int64_t id = -1;  // -1: free slot
