@@ -22,10 +22,6 @@
 //   (0 < d < 1) is narrower than the trilinear one.
 #include <Eigen/Dense>
 
-#if defined(__AVX2__)
-#include <immintrin.h>
-#endif
-
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -86,6 +82,10 @@ class ReferencePorosity {
   double support_radius_ = 0;
   double surface_radius_ = 0;
 
+  // The nearest lookup's 19 loads (the uniform-block shortcut aside), out of line so that the
+  // shortcut inlines into the update loops.
+  double read_points(const Eigen::Vector3d& ref, const NearestStencil& stencil) const;
+
   float value(int i, int j, int k) const {
     return smooth_[static_cast<std::size_t>(i) +
                    static_cast<std::size_t>(m_[0]) *
@@ -137,52 +137,7 @@ inline double ReferencePorosity::nearest(const Eigen::Vector3d& ref,
     if (b == Block::fluid) return 1.0;
     if (b == Block::solid) return 0.0;
   }
-  // Voxel index of every point, four at a time where AVX2 is there (the same additions and
-  // comparisons as the scalar loop); a point off the lattice reads voxel 0, a fluid voxel of the
-  // padding.
-  alignas(32) std::array<std::int32_t, NearestStencil::kPadded> voxel;
-  const auto iy = static_cast<std::int32_t>(sy), iz = static_cast<std::int32_t>(sz);
-#if defined(__AVX2__)
-  {
-    const __m256d half = _mm256_set1_pd(0.5), zero = _mm256_setzero_pd();
-    const __m256d rx = _mm256_set1_pd(ref.x()), ry = _mm256_set1_pd(ref.y()),
-                  rz = _mm256_set1_pd(ref.z());
-    const __m256d mx = _mm256_set1_pd(m_[0]), my = _mm256_set1_pd(m_[1]),
-                  mz = _mm256_set1_pd(m_[2]);
-    const __m128i vy = _mm_set1_epi32(iy), vz = _mm_set1_epi32(iz);
-    for (int g = 0; g < NearestStencil::kPadded; g += 4) {
-      const __m256d x = _mm256_add_pd(_mm256_add_pd(rx, _mm256_load_pd(&stencil.x[g])), half);
-      const __m256d y = _mm256_add_pd(_mm256_add_pd(ry, _mm256_load_pd(&stencil.y[g])), half);
-      const __m256d z = _mm256_add_pd(_mm256_add_pd(rz, _mm256_load_pd(&stencil.z[g])), half);
-      const __m256d on = _mm256_and_pd(
-          _mm256_and_pd(
-              _mm256_and_pd(_mm256_cmp_pd(x, zero, _CMP_GE_OQ), _mm256_cmp_pd(x, mx, _CMP_LT_OQ)),
-              _mm256_and_pd(_mm256_cmp_pd(y, zero, _CMP_GE_OQ), _mm256_cmp_pd(y, my, _CMP_LT_OQ))),
-          _mm256_and_pd(_mm256_cmp_pd(z, zero, _CMP_GE_OQ), _mm256_cmp_pd(z, mz, _CMP_LT_OQ)));
-      const __m128i i = _mm256_cvttpd_epi32(_mm256_and_pd(x, on));
-      const __m128i j = _mm256_cvttpd_epi32(_mm256_and_pd(y, on));
-      const __m128i k = _mm256_cvttpd_epi32(_mm256_and_pd(z, on));
-      const __m128i v =
-          _mm_add_epi32(_mm_add_epi32(i, _mm_mullo_epi32(j, vy)), _mm_mullo_epi32(k, vz));
-      _mm_store_si128(reinterpret_cast<__m128i*>(&voxel[static_cast<std::size_t>(g)]), v);
-    }
-  }
-#else
-  for (std::size_t i = 0; i < NearestStencil::kPadded; ++i) {
-    const double x = ref.x() + stencil.x[i] + 0.5;
-    const double y = ref.y() + stencil.y[i] + 0.5;
-    const double z = ref.z() + stencil.z[i] + 0.5;
-    const bool on = x >= 0 && y >= 0 && z >= 0 && x < m_[0] && y < m_[1] && z < m_[2];
-    voxel[i] = on ? static_cast<std::int32_t>(x) + iy * static_cast<std::int32_t>(y) +
-                        iz * static_cast<std::int32_t>(z)
-                  : 0;
-  }
-#endif
-  // Summed in stencil order: the same bits as the point-by-point sum.
-  float fluid = 0;
-  for (int i = 0; i < NearestStencil::kPoints; ++i)
-    fluid += fluid_[static_cast<std::size_t>(voxel[static_cast<std::size_t>(i)])];
-  return fluid / 19.0f;  // as the averaged lattice: exactly 0 or 1 at the ends
+  return read_points(ref, stencil);
 }
 
 }  // namespace lbdem::hlbm
