@@ -36,7 +36,8 @@ BodyField<T>::BodyField(std::span<const Shape> shapes, const Subdomain& sub,
   if (cells >= std::numeric_limits<std::uint32_t>::max() ||
       std::max({sub.box.n[0], sub.box.n[1], sub.box.n[2]}) + 1 >
           std::numeric_limits<std::uint16_t>::max())
-    throw std::invalid_argument("BodyField: local box too large for 32-bit cell indices");
+    throw std::invalid_argument(
+        "BodyField: local box too large for 32-bit cell indices and 16-bit coordinates");
   if (!(frame.units.dx > 0) || !(frame.units.dt > 0))
     throw std::invalid_argument("BodyField: unit converter without a positive dx and dt");
   field_.d.assign(cells, 1.0f);

@@ -56,10 +56,6 @@ class ReferencePorosity {
   // (R^T c_i). Exactly 0 or 1 when all 19 agree.
   double nearest(const Eigen::Vector3d& ref, const NearestStencil& stencil) const;
 
-  // Nearest voxel of a point (reference-lattice coordinates, see nearest()) and whether the
-  // voxels within two of it (Chebyshev distance) are all fluid (1), all solid (0), or mixed.
-  enum class Block : std::uint8_t { mixed, fluid, solid };
-
   // Reference-lattice coordinates of a shape-frame point p (m): ref = p / h + shift().
   double spacing() const { return h_; }
   const Eigen::Vector3d& shift() const { return shift_; }
@@ -71,6 +67,8 @@ class ReferencePorosity {
 
  private:
   static constexpr int kPad = 2;  // one layer for the 19-point stencil, one for trilinear
+  // Whether the voxels within Chebyshev distance 2 of a voxel are all fluid, all solid, or mixed.
+  enum class Block : std::uint8_t { mixed, fluid, solid };
   double h_ = 0;
   Eigen::Vector3d shift_ = Eigen::Vector3d::Zero();
   std::array<int, 3> m_{0, 0, 0};  // padded extents
