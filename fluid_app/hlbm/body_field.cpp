@@ -3,6 +3,7 @@
 #include "fluid_app/lattice/d3q19.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -20,12 +21,9 @@ namespace {
 // Larger moves re-embed the body from scratch.
 constexpr double kMaxIncrementalMove = 0.5;
 
-// Local coordinates of a cell index with 32-bit divisions (the indices fit 32 bits, checked
-// in the constructor); cheaper than LocalBox::coords on the per-cell paths.
-std::array<int, 3> coords32(const LocalBox& b, std::uint32_t cell) {
-  const auto sx = static_cast<std::uint32_t>(b.sx()), sy = static_cast<std::uint32_t>(b.sy());
-  const std::uint32_t q = cell / sx, z = q / sy;
-  return {static_cast<int>(cell - q * sx), static_cast<int>(q - z * sy), static_cast<int>(z)};
+std::array<std::uint16_t, 3> local(int x, int y, int z) {
+  return {static_cast<std::uint16_t>(x), static_cast<std::uint16_t>(y),
+          static_cast<std::uint16_t>(z)};
 }
 
 }  // namespace
@@ -35,8 +33,11 @@ BodyField<T>::BodyField(std::span<const Shape> shapes, const Subdomain& sub,
                         const LatticeFrame& frame, PorousField<T>& field, PorosityLookup lookup)
     : lookup_(lookup), sub_(sub), frame_(frame), field_(field) {
   const auto cells = static_cast<std::size_t>(sub.box.cells_with_ghosts());
-  if (cells >= std::numeric_limits<std::uint32_t>::max())
-    throw std::invalid_argument("BodyField: local box too large for 32-bit cell indices");
+  if (cells >= std::numeric_limits<std::uint32_t>::max() ||
+      std::max({sub.box.n[0], sub.box.n[1], sub.box.n[2]}) + 1 >
+          std::numeric_limits<std::uint16_t>::max())
+    throw std::invalid_argument(
+        "BodyField: local box too large for 32-bit cell indices and 16-bit coordinates");
   if (!(frame.units.dx > 0) || !(frame.units.dt > 0))
     throw std::invalid_argument("BodyField: unit converter without a positive dx and dt");
   field_.d.assign(cells, 1.0f);
@@ -44,7 +45,6 @@ BodyField<T>::BodyField(std::span<const Shape> shapes, const Subdomain& sub,
   field_.bodies.clear();
   field_.active = false;
   inside_.assign(cells, -1);
-  mark_.assign(cells, 0u);
   shapes_.reserve(shapes.size());
   for (const Shape& s : shapes) shapes_.emplace_back(s.voxels);
 }
@@ -67,14 +67,6 @@ float BodyField<T>::body_porosity(std::int64_t id, CellIndex cell) const {
 }
 
 template <class T>
-void BodyField<T>::next_epoch() {
-  if (++epoch_ == 0) {  // wrapped: forget all marks
-    std::fill(mark_.begin(), mark_.end(), 0u);
-    epoch_ = 1;
-  }
-}
-
-template <class T>
 void BodyField<T>::set_pose(Tracked& t, const BodyState& s) const {
   const double dx = frame_.units.dx;
   for (int a = 0; a < 3; ++a) {
@@ -90,18 +82,28 @@ void BodyField<T>::set_pose(Tracked& t, const BodyState& s) const {
   t.rot = q.normalized().toRotationMatrix();
   t.to_ref = t.rot.transpose() * (dx / shapes_[static_cast<std::size_t>(t.shape)].spacing());
   // h c_i in lattice units is (h / dx) c_i; mapped by to_ref = rot^T dx / h it is rot^T c_i.
-  for (std::size_t i = 0; i < t.stencil.size(); ++i)
-    t.stencil[i] =
+  for (std::size_t i = 0; i < d3q19::c.size(); ++i) {
+    const Eigen::Vector3d o =
         t.rot.transpose() * Eigen::Vector3d(d3q19::c[i][0], d3q19::c[i][1], d3q19::c[i][2]);
+    t.stencil.x[i] = o.x();
+    t.stencil.y[i] = o.y();
+    t.stencil.z[i] = o.z();
+  }
 }
 
 // Paper, appendix "Representation of a particle in the fluid": the node at minimum-image
 // offset r (lattice units) from the centre is mapped into the shape frame (rotated by q^-1)
-// and gets the smoothed reference porosity there.
+// and gets the smoothed reference porosity there. The map p = to_ref r + shift is written as
+// explicit fused multiply-adds in a fixed order, so that no compiler contraction can give one
+// path (band update, full scan, body_porosity) other bits than another.
 template <class T>
 float BodyField<T>::porosity(const Tracked& t, const Eigen::Vector3d& r) const {
   const ReferencePorosity& ref = shapes_[static_cast<std::size_t>(t.shape)];
-  const Eigen::Vector3d p = t.to_ref * r + ref.shift();
+  const Eigen::Matrix3d& m = t.to_ref;
+  Eigen::Vector3d p;
+  for (int a = 0; a < 3; ++a)
+    p[a] =
+        std::fma(m(a, 0), r[0], std::fma(m(a, 1), r[1], std::fma(m(a, 2), r[2], ref.shift()[a])));
   return static_cast<float>(lookup_ == PorosityLookup::nearest ? ref.nearest(p, t.stencil)
                                                                : ref.at(p));
 }
@@ -119,21 +121,24 @@ void BodyField<T>::tabulate_offsets(const Tracked& t) {
 
 template <class T>
 float BodyField<T>::evaluate(std::int32_t slot, std::uint32_t cell, int x, int y, int z,
-                             std::vector<BandCell>& band, UpdateStats& stats) {
-  mark_[cell] = epoch_;
-  touched_.push_back(cell);
+                             UpdateStats& stats) {
   ++stats.evaluated;
   const Eigen::Vector3d r(rel_[0][static_cast<std::size_t>(x)],
                           rel_[1][static_cast<std::size_t>(y)],
                           rel_[2][static_cast<std::size_t>(z)]);
   const float d = porosity(tracked_[static_cast<std::size_t>(slot)], r);
+  // A cell whose interior owner changes is reset by combine(); the band cells (old and new)
+  // are added by the callers.
   std::int32_t& in = inside_[cell];
   if (d == 0.0f) {
-    if (in >= 0 && in != slot) ++stats.interior_conflicts;
-    in = slot;
-  } else {
-    if (in == slot) in = -1;
-    if (d < 1.0f) band.push_back({cell, d});
+    if (in != slot) {
+      if (in >= 0) ++stats.interior_conflicts;
+      in = slot;
+      touched_.push_back(cell);
+    }
+  } else if (in == slot) {
+    in = -1;
+    touched_.push_back(cell);
   }
   return d;
 }
@@ -162,7 +167,11 @@ void BodyField<T>::scan(std::int32_t slot, std::vector<BandCell>& band, UpdateSt
     for (int y : lists[1])
       for (int x : lists[0]) {
         const auto c = static_cast<std::uint32_t>(sub_.box.index(x, y, z));
-        if (mark_[c] != epoch_) evaluate(slot, c, x, y, z, band, stats);
+        const float d = evaluate(slot, c, x, y, z, stats);
+        if (d > 0.0f && d < 1.0f) {
+          band.push_back({c, d, local(x, y, z)});
+          touched_.push_back(c);
+        }
       }
 }
 
@@ -187,6 +196,35 @@ void BodyField<T>::remove(std::int32_t slot, UpdateStats& stats) {
       }
 }
 
+template <class T>
+void BodyField<T>::open_window(const std::array<std::vector<int>, 3>& lists) {
+  Window& w = window_;
+  for (int a = 0; a < 3; ++a) {
+    w.l[a] = lists[a];
+    w.inv[a].assign(static_cast<std::size_t>(sub_.box.n[a]) + 2, -1);
+    for (std::size_t i = 0; i < lists[a].size(); ++i)
+      w.inv[a][static_cast<std::size_t>(lists[a][i])] = static_cast<int>(i);
+  }
+  const std::size_t nx = lists[0].size();
+  w.words = static_cast<int>((nx + 63) / 64);
+  w.rows = lists[1].size() * lists[2].size();
+  const auto words = static_cast<std::size_t>(w.words);
+  w.adjacent_up.assign(words, 0);
+  w.adjacent_down.assign(words, 0);
+  for (std::size_t i = 0; i + 1 < nx; ++i)
+    if (lists[0][i + 1] == lists[0][i] + 1) {
+      w.adjacent_up[(i + 1) / 64] |= std::uint64_t{1} << ((i + 1) % 64);
+      w.adjacent_down[i / 64] |= std::uint64_t{1} << (i % 64);
+    }
+  for (auto* bits : {&w.evaluated, &w.band, &w.frontier, &w.candidates})
+    bits->assign(w.rows * words, 0);
+  w.listed.assign(w.rows, 0);
+  w.frontier_rows.clear();
+  w.candidate_rows.clear();
+  w.grown.resize(words);
+  w.d.resize(w.rows * nx);
+}
+
 // The surface-only update (paper: "only the nodes currently covered by a body and a
 // surrounding growth layer have to be revisited"). Candidates: the old band (cells that may
 // leave it) and, grown from it through 26-neighbours, every cell connected to a new band
@@ -195,67 +233,124 @@ void BodyField<T>::remove(std::int32_t slot, UpdateStats& stats) {
 // outside: those contain a cell of the box's outermost layer, so when the body's support
 // crosses that layer its cells there are candidates too. Interior cells (d = 0) not reached
 // keep their value: they cannot have left the interior without entering the new band.
+//
+// The growth runs on bit rows of the body's window, a round at a time: the band cells found
+// in the last round are dilated by one cell (shifts along x, neighbouring rows in y and z)
+// and the cells of that not yet evaluated are the next round's candidates. A band cell's
+// neighbours are within reach + 1 cell of the centre on every axis, so inside the window.
+// The new band comes out in cell order, as from a full scan.
 template <class T>
 void BodyField<T>::follow_band(std::int32_t slot, std::vector<BandCell>& band, UpdateStats& stats) {
   const LocalBox& box = sub_.box;
   const Tracked& t = tracked_[static_cast<std::size_t>(slot)];
   tabulate_offsets(t);
-  queue_.clear();
-  auto visit = [&](std::uint32_t c, int x, int y, int z) {
-    if (mark_[c] == epoch_) return;
-    const float d = evaluate(slot, c, x, y, z, band, stats);
-    if (d > 0.0f && d < 1.0f)
-      queue_.push_back({c,
-                        {static_cast<std::int16_t>(x), static_cast<std::int16_t>(y),
-                         static_cast<std::int16_t>(z)}});
-  };
-  for (const BandCell& b : t.band) {
-    const auto l = coords32(box, b.cell);
-    visit(b.cell, l[0], l[1], l[2]);
-  }
+  open_window(support(t));
+  Window& w = window_;
+  const std::size_t nx = w.l[0].size(), ny = w.l[1].size(), nz = w.l[2].size();
+  const auto words = static_cast<std::size_t>(w.words);
 
-  const auto lists = support(t);
-  for (int a = 0; a < 3; ++a) {
-    const int last = box.n[a] + 1;
-    for (int face : {0, last}) {
-      if (lists[a].empty() || std::find(lists[a].begin(), lists[a].end(), face) == lists[a].end())
-        continue;
+  // Evaluates window cell (i, row) unless done; a band cell joins the band and the frontier.
+  auto visit = [&](std::size_t i, std::size_t jy, std::size_t jz) {
+    const std::size_t row = jy + ny * jz;
+    const std::size_t word = row * words + i / 64;
+    const std::uint64_t bit = std::uint64_t{1} << (i % 64);
+    if (w.evaluated[word] & bit) return;
+    w.evaluated[word] |= bit;
+    const int x = w.l[0][i], y = w.l[1][jy], z = w.l[2][jz];
+    const float d = evaluate(slot, static_cast<std::uint32_t>(box.index(x, y, z)), x, y, z, stats);
+    if (d > 0.0f && d < 1.0f) {
+      w.d[row * nx + i] = d;
+      w.band[word] |= bit;
+      if (!w.frontier[word]) {
+        bool empty = true;
+        for (std::size_t k = 0; k < words; ++k) empty = empty && !w.frontier[row * words + k];
+        if (empty) w.frontier_rows.push_back(row);
+      }
+      w.frontier[word] |= bit;
+    }
+  };
+
+  // Seeds: the old band (inside the window: it moved by less than a cell) and the box's
+  // outermost layer where the support reaches it.
+  for (const BandCell& b : t.band) {
+    touched_.push_back(b.cell);
+    const int i = w.inv[0][b.l[0]], j = w.inv[1][b.l[1]], k = w.inv[2][b.l[2]];
+    if (i < 0 || j < 0 || k < 0)
+      throw std::logic_error("BodyField: a band cell of body " + std::to_string(t.id) +
+                             " lies beyond its reach after an incremental move");
+    visit(static_cast<std::size_t>(i), static_cast<std::size_t>(j), static_cast<std::size_t>(k));
+  }
+  const std::array<std::size_t, 3> n = {nx, ny, nz};
+  for (int a = 0; a < 3; ++a)
+    for (int face : {0, box.n[a] + 1}) {
+      const int wf = w.inv[a][static_cast<std::size_t>(face)];
+      if (wf < 0) continue;
       const int b = (a + 1) % 3, c = (a + 2) % 3;
-      for (int lb : lists[b])
-        for (int lc : lists[c]) {
-          std::array<int, 3> l;
-          l[a] = face;
-          l[b] = lb;
-          l[c] = lc;
-          visit(static_cast<std::uint32_t>(box.index(l[0], l[1], l[2])), l[0], l[1], l[2]);
+      for (std::size_t ib = 0; ib < n[static_cast<std::size_t>(b)]; ++ib)
+        for (std::size_t ic = 0; ic < n[static_cast<std::size_t>(c)]; ++ic) {
+          std::array<std::size_t, 3> wi;
+          wi[static_cast<std::size_t>(a)] = static_cast<std::size_t>(wf);
+          wi[static_cast<std::size_t>(b)] = ib;
+          wi[static_cast<std::size_t>(c)] = ic;
+          visit(wi[0], wi[1], wi[2]);
         }
     }
+
+  // Rounds of growth.
+  std::vector<std::uint64_t>& grown = w.grown;
+  std::vector<std::size_t>& rows = w.growing_rows;
+  while (!w.frontier_rows.empty()) {
+    rows.swap(w.frontier_rows);
+    w.frontier_rows.clear();
+    for (std::size_t row : rows) {
+      const std::size_t base = row * words;
+      for (std::size_t k = 0; k < words; ++k) {
+        const std::uint64_t v = w.frontier[base + k];
+        const std::uint64_t up = (v << 1) | (k > 0 ? w.frontier[base + k - 1] >> 63 : 0);
+        const std::uint64_t down = (v >> 1) | (k + 1 < words ? w.frontier[base + k + 1] << 63 : 0);
+        grown[k] = v | (up & w.adjacent_up[k]) | (down & w.adjacent_down[k]);
+      }
+      for (std::size_t k = 0; k < words; ++k) w.frontier[base + k] = 0;
+      const std::size_t jy = row % ny, jz = row / ny;
+      for (int dz = -1; dz <= 1; ++dz) {
+        const std::size_t tz = jz + static_cast<std::size_t>(dz);
+        if (tz >= nz || w.l[2][tz] != w.l[2][jz] + dz) continue;
+        for (int dy = -1; dy <= 1; ++dy) {
+          const std::size_t ty = jy + static_cast<std::size_t>(dy);
+          if (ty >= ny || w.l[1][ty] != w.l[1][jy] + dy) continue;
+          const std::size_t target = ty + ny * tz;
+          for (std::size_t k = 0; k < words; ++k) w.candidates[target * words + k] |= grown[k];
+          if (!w.listed[target]) {
+            w.listed[target] = 1;
+            w.candidate_rows.push_back(target);
+          }
+        }
+      }
+    }
+    for (std::size_t row : w.candidate_rows) {
+      w.listed[row] = 0;
+      const std::size_t jy = row % ny, jz = row / ny;
+      for (std::size_t k = 0; k < words; ++k) {
+        std::uint64_t todo = w.candidates[row * words + k] & ~w.evaluated[row * words + k];
+        w.candidates[row * words + k] = 0;
+        while (todo) {
+          visit(64 * k + static_cast<std::size_t>(std::countr_zero(todo)), jy, jz);
+          todo &= todo - 1;
+        }
+      }
+    }
+    w.candidate_rows.clear();
   }
 
-  struct Offset {
-    std::int64_t shift;
-    int dx, dy, dz;
-  };
-  std::array<Offset, 26> offsets;
-  int n_off = 0;
-  for (int dz = -1; dz <= 1; ++dz)
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dx = -1; dx <= 1; ++dx)
-        if (dx != 0 || dy != 0 || dz != 0) offsets[n_off++] = {box.shift(dx, dy, dz), dx, dy, dz};
-  for (std::size_t head = 0; head < queue_.size(); ++head) {
-    const Queued q = queue_[head];
-    const int x = q.l[0], y = q.l[1], z = q.l[2];
-    if (box.interior(x, y, z)) {  // all 26 neighbours are stored: no checks
-      for (const Offset& o : offsets)
-        visit(static_cast<std::uint32_t>(std::int64_t(q.cell) + o.shift), x + o.dx, y + o.dy,
-              z + o.dz);
-      continue;
-    }
-    for (const Offset& o : offsets) {
-      const int nx = x + o.dx, ny = y + o.dy, nz = z + o.dz;
-      if (!sub_.stored(0, nx) || !sub_.stored(1, ny) || !sub_.stored(2, nz)) continue;
-      visit(static_cast<std::uint32_t>(box.index(nx, ny, nz)), nx, ny, nz);
-    }
+  for (std::size_t row = 0; row < w.rows; ++row) {
+    const int y = w.l[1][row % ny], z = w.l[2][row / ny];
+    for (std::size_t k = 0; k < words; ++k)
+      for (std::uint64_t bits = w.band[row * words + k]; bits; bits &= bits - 1) {
+        const std::size_t i = 64 * k + static_cast<std::size_t>(std::countr_zero(bits));
+        const auto c = static_cast<std::uint32_t>(box.index(w.l[0][i], y, z));
+        band.push_back({c, w.d[row * nx + i], local(w.l[0][i], y, z)});
+        touched_.push_back(c);
+      }
   }
 }
 
@@ -358,7 +453,6 @@ UpdateStats BodyField<T>::update(std::span<const BodyState> states, UpdateMode m
 
     std::vector<BandCell> band;
     band.reserve(t.band.size() + t.band.size() / 8 + 16);  // the band changes little per step
-    next_epoch();
     if (fresh || mode == UpdateMode::full) {
       t = std::move(next);
       scan(slot, band, stats);

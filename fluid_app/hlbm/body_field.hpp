@@ -109,6 +109,7 @@ class BodyField {
   struct BandCell {
     std::uint32_t cell;
     float d;
+    std::array<std::uint16_t, 3> l;  // local coordinates (no index division to recover them)
   };
   struct Tracked {
     std::int64_t id = -1;  // -1: free slot
@@ -117,41 +118,49 @@ class BodyField {
     Eigen::Matrix3d rot = Eigen::Matrix3d::Identity();     // shape frame -> space frame
     Eigen::Matrix3d to_ref = Eigen::Matrix3d::Identity();  // rot^T dx / h
     // Nearest lookup: the lattice-frame stencil h c_i in reference coordinates (rot^T c_i).
-    std::array<Eigen::Vector3d, 19> stencil;
+    NearestStencil stencil;
     std::vector<BandCell> band;  // cells with 0 < d < 1
     // Q and L of the last step (this rank's cells), for the difference in penalty_loads.
     std::array<double, 3> covered{}, covered_moment{};
   };
 
-  // A cell waiting in the band search, with its local coordinates (no index division).
-  struct Queued {
-    std::uint32_t cell;
-    std::array<std::int16_t, 3> l;
+  // The band search of one body runs on a window: the product of its support lists (local
+  // coordinates per axis within reach, support()), window index w_a -> local lists[a][w_a].
+  // Sets of window cells are bit rows (x along the bits, one row per (w_y, w_z)).
+  struct Window {
+    std::array<std::vector<int>, 3> l;    // local coordinate per window index
+    std::array<std::vector<int>, 3> inv;  // window index per local coordinate, -1 outside
+    int words = 0;                        // 64-bit words per row
+    std::size_t rows = 0;
+    // Per x word: bit w set when window x index w is the x neighbour of w - 1 (up) or of
+    // w + 1 (down) in the box (the lists skip the cells out of reach).
+    std::vector<std::uint64_t> adjacent_up, adjacent_down;
+    std::vector<std::uint64_t> evaluated, band, frontier, candidates;  // rows x words
+    std::vector<std::uint8_t> listed;                                  // per row: in a list
+    std::vector<std::size_t> frontier_rows, candidate_rows, growing_rows;
+    std::vector<std::uint64_t> grown;  // one dilated frontier row
+    std::vector<float> d;              // porosity of the evaluated band cells, by window cell
   };
-
   std::vector<ReferencePorosity> shapes_;
   PorosityLookup lookup_ = PorosityLookup::trilinear;
   Subdomain sub_;
   LatticeFrame frame_;
   PorousField<T>& field_;
   std::vector<std::int32_t> inside_;  // per cell: body whose interior (d = 0) covers it
-  std::vector<std::uint32_t> mark_;   // per cell: epoch of its last evaluation
-  std::uint32_t epoch_ = 0;
-  std::vector<Tracked> tracked_;  // by slot
+  std::vector<Tracked> tracked_;      // by slot
   std::unordered_map<std::int64_t, std::int32_t> slots_;
   std::vector<std::uint32_t> touched_;  // cells evaluated in this update
-  std::vector<Queued> queue_;           // band search work list
+  Window window_;                       // band search scratch
   std::vector<std::int64_t> departed_;  // bodies taken out in the last update with Q != 0
   // Minimum-image offset from the centre of the body being updated, per axis and local
   // coordinate (lattice units): tabulated once per body and update, read per evaluation.
   std::array<std::vector<double>, 3> rel_;
 
-  void next_epoch();
   void set_pose(Tracked& t, const BodyState& s) const;
   float porosity(const Tracked& t, const Eigen::Vector3d& r) const;
   void tabulate_offsets(const Tracked& t);
-  float evaluate(std::int32_t slot, std::uint32_t cell, int x, int y, int z,
-                 std::vector<BandCell>& band, UpdateStats& stats);
+  float evaluate(std::int32_t slot, std::uint32_t cell, int x, int y, int z, UpdateStats& stats);
+  void open_window(const std::array<std::vector<int>, 3>& lists);
   std::array<std::vector<int>, 3> support(const Tracked& t) const;
   void scan(std::int32_t slot, std::vector<BandCell>& band, UpdateStats& stats);
   void remove(std::int32_t slot, UpdateStats& stats);
