@@ -137,9 +137,9 @@ FluidParams parse_fluid(Section& s) {
           ? DecompositionKind::balanced
           : DecompositionKind::regular;
   p.covered_cell_weight = s.get<double>(
-      "covered_cell_weight", 8.0,
+      "covered_cell_weight", 10.0,
       "work of a lattice cell a body covers (band and interior: porosity, penalization, load "
-      "sums) in plain fluid cells, for decomposition: balanced (docs/scaling.md)",
+      "sums) in plain fluid cells, for decomposition: balanced (measured: docs/scaling.md)",
       Bounds::at_least(1.0));
   {
     auto b = s.section_or_defaults("boundaries", "per-face boundary conditions");

@@ -16,9 +16,9 @@
 //     mean_velocity_control: {target: [0, 0, 0], gain: 0.5, integral_gain: 0.05,
 //                             interval: 0, feed_forward: true}
 //     loads: penalization             # or momentum_exchange (docs/method-loads.md)
-//     decomposition: regular          # or balanced: cuts placed by the bodies' work
-//     (docs/scaling.md) covered_cell_weight: 8          # cost of a cell a body covers, in fluid
-//     cells (balanced) boundaries:
+//     decomposition: regular          # or balanced: cuts by the bodies' work (docs/scaling.md)
+//     covered_cell_weight: 10         # work of a covered cell in fluid cells (balanced)
+//     boundaries:
 //       x_min: periodic               # periodic faces must be paired
 //       x_max: periodic
 //       y_min: {type: pressure, pressure: 0}   # Pa, gauge
@@ -92,7 +92,7 @@ struct FluidParams {
   MeanVelocityControl control;
   LoadMethod loads = LoadMethod::penalization;
   DecompositionKind decomposition = DecompositionKind::regular;
-  double covered_cell_weight = 8;       // work of a covered cell / a fluid cell (balanced split)
+  double covered_cell_weight = 10;      // work of a covered cell / a fluid cell (balanced split)
   std::array<FaceBoundary, 6> faces{};  // default: triply periodic
   UnitConverter units;
   FluidOutputParams output;  // fluid.output, fluid.stability, fluid.validation
