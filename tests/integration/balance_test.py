@@ -19,15 +19,12 @@ from lbdem.rundir import Run  # noqa: E402
 
 work = tempfile.mkdtemp()
 try:
-    text = open(os.path.join(src, "configs/bench/bed64_c27.yaml")).read()
-    text = text.replace("../shapes/", os.path.join(src, "configs/shapes") + "/")
-    text = text.replace("../../runs/bench", "out")
     figures = {}
     for kind in ("regular", "balanced"):
-        scene = os.path.join(work, f"bed_{kind}.yaml")
-        variant = text.replace("decomposition: regular", f"decomposition: {kind}")
-        variant = variant.replace("name: bed64_c27", f"name: bed_{kind}")
-        open(scene, "w").write(variant)
+        folder = os.path.join(work, kind)
+        os.makedirs(folder)
+        scene = run.bench_scene_copy(src, "bed64_c27.yaml", folder,
+                                     [("decomposition: regular", f"decomposition: {kind}")])
         run.execute(run.coupled_command(build, scene, 8, 1), scene, timeout=300)
         s = Run(scene, build).summary("fluid")
         work_per_rank = s["per_rank"]["weighted_work"]["values"]

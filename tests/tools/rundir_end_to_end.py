@@ -17,11 +17,7 @@ from lbdem.rundir import Run  # noqa: E402
 
 work = tempfile.mkdtemp()
 try:
-    text = open(os.path.join(src, "configs/bench/quick_cubes8_c27.yaml")).read()
-    text = text.replace("../shapes/", os.path.join(src, "configs/shapes") + "/")
-    text = text.replace("../../runs/bench", "out")
-    scene = os.path.join(work, "quick.yaml")
-    open(scene, "w").write(text)
+    scene = run.bench_scene_copy(src, "quick_cubes8_c27.yaml", work)
     os.environ["LBDEM_BUILD"] = build
     run.execute(run.coupled_command(build, scene, 2, 1), scene, timeout=300)
 

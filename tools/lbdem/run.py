@@ -58,3 +58,21 @@ def run(build, scene, fluid_ranks=1, dem_ranks=1, extra_env=None, timeout=1800, 
     """Launches a coupled scene; returns (wall seconds, combined output). Raises on failure."""
     return execute(coupled_command(build, scene, fluid_ranks, dem_ranks), scene, timeout, log,
                    extra_env)
+
+
+def bench_scene_copy(source_root, scene, folder, replace=None):
+    """configs/bench/SCENE written into FOLDER for a test or a tool: the clump paths made
+    absolute, the output in FOLDER/out, and each (old, new) of `replace` applied (an `old`
+    that is not found raises: the bench scene changed). Returns the new scene's path."""
+    with open(os.path.join(source_root, "configs", "bench", scene)) as f:
+        text = f.read()
+    pairs = [("../shapes/", os.path.join(os.path.abspath(source_root), "configs", "shapes") + "/"),
+             ("../../runs/bench", "out")] + list(replace or [])
+    for old, new in pairs:
+        if old not in text:
+            raise ValueError(f"configs/bench/{scene} no longer holds {old!r}")
+        text = text.replace(old, new)
+    path = os.path.join(folder, scene)
+    with open(path, "w") as f:
+        f.write(text)
+    return path
