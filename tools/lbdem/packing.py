@@ -348,10 +348,14 @@ class _Moves:
 
 def randomise(p, sweeps, seed, log=print, cubes=True):
     """Randomises packing p in place, in three stages:
-    1. hard-sphere Monte Carlo, `sweeps` sweeps of about N displacements (distances only);
-    2. uniformly random cube orientations (Shoemake); a cube that then overlaps a neighbour is
-       given new random orientations (and displacements of up to 0.02 d), each kept when the
-       spheres stay clear and its cube overlaps do not increase, until none overlaps;
+    1. hard-sphere Monte Carlo, sweeps of about N displacements (distances only): `sweeps`
+       of them, and on until the lattice order is below 3/sqrt(N) (at most 10 x sweeps);
+    2. uniformly random cube orientations (Shoemake); passes in which a cube that overlaps a
+       neighbour tries 20 poses (half a new random orientation with a displacement of up to
+       0.2 d, half a joint move as in stage 3) and takes the one with the fewest overlaps if
+       the spheres stay clear and its overlaps do not increase, each pass followed by 20 such
+       tries for every body near an overlap (a clear body by joint moves that keep it clear),
+       until none overlaps;
     3. sweeps/10 sweeps of moves that displace and rotate a body together, accepted only when
        neither spheres nor cubes overlap, so the orientations lose the bias of stage 2.
     Without `cubes` only stage 1 (orientations left aligned). Returns the acceptance ratios of
@@ -365,13 +369,19 @@ def randomise(p, sweeps, seed, log=print, cubes=True):
         return p.x[k] + size * (2 * rng.random((len(k), 3)) - 1)
 
     spheres = _Moves(p, rng, cubes=False)
-    tried = moved = 0
-    for sweep in range(sweeps):
+    tried = moved = sweep = 0
+    block = max(1, sweeps // 4)
+    random_order = 3.0 / math.sqrt(p.n)
+    while sweep < sweeps or (p.order_parameter() > random_order and sweep < 10 * sweeps):
         t, m = spheres.sweep(lambda k: (displaced(k, step), p.q[k]), "none", everyone)
-        tried, moved = tried + t, moved + m
-        if (sweep + 1) % max(1, sweeps // 4) == 0:
-            log(f"packing: sphere sweep {sweep + 1}/{sweeps}, acceptance {moved / tried:.2f}, "
-                f"lattice order {p.order_parameter():.3f}, {time.monotonic() - t0:.1f} s")
+        tried, moved, sweep = tried + t, moved + m, sweep + 1
+        if sweep % block == 0:
+            log(f"packing: sphere sweep {sweep} (of at least {sweeps}), acceptance "
+                f"{moved / tried:.2f}, "
+                f"lattice order {p.order_parameter():.3f} (random: below "
+                f"{random_order:.3f}), {time.monotonic() - t0:.1f} s")
+    log(f"packing: hard spheres after {sweep} sweeps: g(d+) {p.contact_value():.2f} "
+        f"(Carnahan-Starling at phi {PHI_START}: {carnahan_starling_contact(PHI_START):.2f})")
     sphere_acceptance = moved / max(tried, 1)
     if not cubes:
         return sphere_acceptance, None
@@ -414,6 +424,9 @@ def randomise(p, sweeps, seed, log=print, cubes=True):
             if mv.count.any():
                 mv.sweep(redrawn_or_rotated, "fewer", mv.around(mv.count > 0), 20, reach)
             passes += 1
+            if passes % 10 == 0:
+                log(f"packing: orientation pass {passes}, {np.count_nonzero(mv.count)} bodies "
+                    f"overlap, {time.monotonic() - t1:.1f} s")
             if redraws > 2000 * p.n:
                 raise RuntimeError("packing: cannot orient the cubes without overlaps")
     log(f"packing: random cube orientations, {redraws} redraws in {passes} passes to clear the "
@@ -425,8 +438,8 @@ def randomise(p, sweeps, seed, log=print, cubes=True):
         t, m = mv.sweep(rotated, "none", everyone)
         tried, moved = tried + t, moved + m
     log(f"packing: {max(1, sweeps // 10)} sweeps of joint moves, acceptance "
-        f"{moved / max(tried, 1):.2f}, lattice order {p.order_parameter():.3f}, "
-        f"{time.monotonic() - t2:.1f} s")
+        f"{moved / max(tried, 1):.2f}, lattice order {p.order_parameter():.3f}, g(d+) "
+        f"{p.contact_value():.2f}, {time.monotonic() - t2:.1f} s")
     return sphere_acceptance, moved / max(tried, 1)
 
 
