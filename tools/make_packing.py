@@ -40,7 +40,8 @@ print(f"done in {time.monotonic() - t0:.1f} s", flush=True)
 
 def time_revision(rev, args):
     """Runs the packing generator of git revision `rev` (its tools/lbdem) on the same bodies,
-    sweeps and seed, stopped after args.vs_limit seconds. Returns (seconds, last line)."""
+    sweeps and seed, stopped after args.vs_limit seconds; prints its log. Returns (seconds,
+    its last line)."""
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     with tempfile.TemporaryDirectory() as tmp:
         os.makedirs(os.path.join(tmp, "lbdem"))
@@ -61,6 +62,8 @@ def time_revision(rev, args):
                 proc.kill()
                 out, _ = proc.communicate()
                 lines = out.splitlines() + [f"stopped after {args.vs_limit:.0f} s"]
+        for line in lines:
+            print(f"revision {rev}: {line}")
         return time.monotonic() - t0, (lines or ["no output"])[-1]
 
 
