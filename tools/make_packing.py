@@ -17,7 +17,6 @@ revision REV on the same bodies and sweeps, stopped after --vs-limit seconds, an
 times.
 """
 import argparse
-import math
 import os
 import subprocess
 import sys
