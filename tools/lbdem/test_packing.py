@@ -7,8 +7,98 @@ import unittest
 
 import numpy as np
 
-from lbdem import analysis, io, packing
+from lbdem import analysis, geometry, io, packing
 from lbdem import scene as lbdem_scene
+
+
+def _turn(axis, angle):
+    """Quaternion of a rotation by `angle` about a unit `axis`."""
+    return np.concatenate([[math.cos(angle / 2)], math.sin(angle / 2) * np.asarray(axis, float)])
+
+
+class CubeOverlapTest(unittest.TestCase):
+    """The generator's separating-axis test (geometry.boxes_separated) on cube pairs whose
+    contact distance is known, against the normalised test (geometry.box_separation) and
+    through the periodic box."""
+
+    half = np.full(3, 0.5)  # unit cubes
+
+    def separated(self, t, qa, qb):
+        ra, rb = geometry.rotation_matrices(np.array([qa])), geometry.rotation_matrices(
+            np.array([qb]))
+        fast = bool(geometry.boxes_separated(np.array([t], float), ra, rb, self.half,
+                                             self.half)[0])
+        exact = float(geometry.box_separation(np.array([t], float), ra, rb, self.half,
+                                              self.half)[0]) > 0
+        self.assertEqual(fast, exact, f"offset {t}")
+        return fast
+
+    def test_known_contact_distances(self):
+        one = [1.0, 0, 0, 0]
+        z45 = _turn([0, 0, 1], math.pi / 4)
+        y45 = _turn([0, 1, 0], math.pi / 4)
+        cases = [  # (orientation a, orientation b, direction, contact distance)
+            (one, one, [1, 0, 0], 1.0),  # face to face
+            (z45, one, [1, 0, 0], 0.5 + math.sqrt(0.5)),  # edge of a to the face of b
+            (z45, z45, [1, 1, 0], 1.0),  # face to face along the turned axes
+            # Edge to edge: a's edge along z at x = +sqrt(1/2) and b's edge along y at
+            # x = -sqrt(1/2), crossing: only the axis z x y separates them.
+            (z45, y45, [1, 0, 0], math.sqrt(2.0)),
+        ]
+        for qa, qb, direction, contact in cases:
+            n = np.asarray(direction, float) / np.linalg.norm(direction)
+            self.assertTrue(self.separated((contact + 1e-6) * n, qa, qb))
+            self.assertFalse(self.separated((contact - 1e-6) * n, qa, qb))
+
+    def test_edge_edge_needs_the_cross_axis(self):
+        # Just beyond the edge-edge contact no face axis separates the cubes.
+        z45, y45 = _turn([0, 0, 1], math.pi / 4), _turn([0, 1, 0], math.pi / 4)
+        t = np.array([[math.sqrt(2.0) + 0.01, 0, 0]])
+        ra, rb = geometry.rotation_matrices(np.array([z45])), geometry.rotation_matrices(
+            np.array([y45]))
+        a, b = ra[0].T, rb[0].T
+        faces = np.concatenate([a, b])
+        proj = np.abs(faces @ a.T) @ self.half + np.abs(faces @ b.T) @ self.half
+        self.assertTrue(np.all(np.abs(faces @ t[0]) <= proj))
+        self.assertTrue(geometry.boxes_separated(t, ra, rb, self.half, self.half)[0])
+
+    def test_random_pairs_agree_with_the_normalised_test(self):
+        rng = np.random.default_rng(5)
+        m = 4000
+        t = rng.uniform(-1.8, 1.8, (m, 3))
+        ra = geometry.rotation_matrices(geometry.random_quaternions(rng, m))
+        rb = geometry.rotation_matrices(geometry.random_quaternions(rng, m))
+        gap = geometry.box_separation(t, ra, rb, self.half, self.half)
+        fast = geometry.boxes_separated(t, ra, rb, self.half, self.half)
+        clear = np.abs(gap) > 1e-9
+        self.assertGreater(np.count_nonzero(gap > 0), m // 10)
+        self.assertGreater(np.count_nonzero(gap <= 0), m // 10)
+        np.testing.assert_array_equal(fast[clear], gap[clear] > 0)
+
+    def test_pairs_across_the_periodic_boundary(self):
+        # Two aligned cubes 0.9 a apart through the face x = 0 of the box: both the exact check
+        # and the generator's count see the overlap; 1.1 a apart the cubes are clear (the
+        # spheres, d = 1.24 a, still overlap), 1.3 a apart both are.
+        p = packing.Packing(27, 0.05)  # lattice spacing 2.19 d: room between the rows
+        for gap, spheres, expected in ((0.9, 1, 1), (1.1, 1, 0), (1.3, 0, 0)):
+            p.x[0] = [0.05 * p.a, p.spacing, p.spacing]
+            p.x[1] = [p.box - (gap - 0.05) * p.a, p.spacing, p.spacing]
+            p.q[:] = [1, 0, 0, 0]
+            self.assertEqual(p.overlaps(), (spheres, expected))
+            mv = packing._Moves(p, np.random.default_rng(0), cubes=True)
+            self.assertEqual(list(mv.cube_counts()[:2]), [expected, expected])
+            self.assertEqual(int(mv.cube_counts()[2:].sum()), 0)
+
+    def test_small_box_counts_every_image(self):
+        # 8 bodies: the box is narrower than two cube reaches, so a pair can be close through
+        # two images at once; near_pairs lists both, and a body with its own image once.
+        p = packing.Packing(8, 0.4)
+        p.x[0], p.x[1] = [0.0, 0, 0], [0.5 * p.box, 0, 0]
+        i, j, d = p.near_pairs(0.6 * p.box)
+        np.testing.assert_allclose(sorted(d[(i == 0) & (j == 1), 0]), [-0.5 * p.box,
+                                                                       0.5 * p.box])
+        i, j, d = p.near_pairs(1.01 * p.box)
+        self.assertEqual(np.count_nonzero((i == 0) & (j == 0)), 3)  # +-x, +-y, +-z once each
 
 
 class Packing(unittest.TestCase):
