@@ -331,11 +331,11 @@ void BodyField<T>::follow_band(std::int32_t slot, std::vector<BandCell>& band, U
       w.listed[row] = 0;
       const std::size_t jy = row % ny, jz = row / ny;
       for (std::size_t k = 0; k < words; ++k) {
-        std::uint64_t todo = w.candidates[row * words + k] & ~w.evaluated[row * words + k];
+        std::uint64_t left = w.candidates[row * words + k] & ~w.evaluated[row * words + k];
         w.candidates[row * words + k] = 0;
-        while (todo) {
-          visit(64 * k + static_cast<std::size_t>(std::countr_zero(todo)), jy, jz);
-          todo &= todo - 1;
+        while (left) {
+          visit(64 * k + static_cast<std::size_t>(std::countr_zero(left)), jy, jz);
+          left &= left - 1;
         }
       }
     }
