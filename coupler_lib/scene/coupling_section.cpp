@@ -41,9 +41,10 @@ CouplingParams parse_coupling(Section& s) {
       Bounds::non_negative());
   p.wait = s.choice("wait", "backoff", {"backoff", "blocking"},
                     "how a side waits for the other: backoff sleeps, blocking spins a core");
-  p.overlap = s.get<bool>("overlap", false,
-                          "the two programs compute at the same time, the fluid on body states "
-                          "one fluid step older");
+  p.overlap =
+      s.get<bool>("overlap", true,
+                  "the two programs compute at the same time, the fluid on body states "
+                  "one fluid step older (false: they take turns; docs/coupling-overlap.md)");
   s.finish();
   return p;
 }

@@ -94,8 +94,8 @@ TEST(Schedule, CouplingKeysAreCheckedByTheReader) {
             1);
   EXPECT_THROW(coupled("coupling: {wait: spin}\n"), SceneError);
   EXPECT_EQ(coupled("coupling: {wait: blocking}\n").coupling.wait, "blocking");
-  EXPECT_FALSE(coupled().coupling.overlap);
-  EXPECT_TRUE(coupled("coupling: {overlap: true}\n").coupling.overlap);
+  EXPECT_TRUE(coupled().coupling.overlap);  // the default: measured, docs/coupling-overlap.md
+  EXPECT_FALSE(coupled("coupling: {overlap: false}\n").coupling.overlap);
   EXPECT_THROW(coupled("coupling: {overlap: 2}\n"), SceneError);
   EXPECT_THROW(coupled("coupling: {overlap: sometimes}\n"), SceneError);
 }
