@@ -342,12 +342,12 @@ class Study:
         self.log(f"study: summary {path}")
 
     def render(self, name):
-        from . import bodymesh
+        from . import picture
         scene = os.path.join(self.out, name, "scene.yaml")
-        xdmf = bodymesh.write_surfaces(scene)
         try:
-            png = bodymesh.render_png(scene, xdmf, self.log)
-        except RuntimeError as e:  # a picture is not worth losing the study for
+            png = picture.render_png(scene, self.log)
+        except (RuntimeError, FileNotFoundError) as e:  # a picture is not worth the study
             self.log(f"study: {name}: no picture, the render failed: {str(e)[-600:]}")
             png = None
-        self.log(f"study: {name}: body surfaces {xdmf}" + (f", picture {png}" if png else ""))
+        self.log(f"study: {name}: body surfaces {picture.surfaces_path(scene)}" +
+                 (f", picture {png}" if png else ""))
