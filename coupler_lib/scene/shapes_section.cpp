@@ -21,6 +21,8 @@ std::string resolve(const Section& s, const std::string& file) {
 std::string existing_file(Section& s, std::string_view key, std::string_view doc) {
   const auto file = s.require<std::string>(key, doc);
   const auto path = resolve(s, file);
+  if (std::filesystem::is_directory(path))
+    s.fail(key, "'" + file + "' is a folder, expected a file (" + path + ")");
   if (!std::filesystem::is_regular_file(path))
     s.fail(key, "file '" + file + "' not found (looked for " + path + ")");
   return path;

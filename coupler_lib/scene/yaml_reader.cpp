@@ -216,7 +216,7 @@ template <class T>
 T Section::require(std::string_view key, std::string_view doc, Bounds b) {
   declare(key);
   const YAML::Node n = child(key);
-  if (!n) fail("", "missing required key '" + std::string(key) + "' (" + std::string(doc) + ")");
+  if (!n) fail_missing(key, "(" + std::string(doc) + ")");
   T v = convert<T>(key, n, b);
   record(key, to_text(v), false, doc, to_json(v));
   return v;
@@ -265,15 +265,14 @@ std::string Section::choice(std::string_view key, std::string fallback,
 
 std::string Section::require_choice(std::string_view key, const std::vector<std::string>& options,
                                     std::string_view doc) {
-  if (!has(key))
-    fail("", "missing required key '" + std::string(key) + "': one of {" + join(options) + "}");
+  if (!has(key)) fail_missing(key, "(one of {" + join(options) + "})");
   return choice(key, "", options, doc);
 }
 
 std::vector<double> Section::numbers(std::string_view key, std::string_view doc, Bounds b) {
   declare(key);
   const YAML::Node n = child(key);
-  if (!n) fail("", "missing required key '" + std::string(key) + "' (" + std::string(doc) + ")");
+  if (!n) fail_missing(key, "(" + std::string(doc) + ")");
   std::vector<double> out;
   if (n.IsScalar()) {
     out.push_back(convert<double>(key, n, b));
@@ -291,7 +290,7 @@ std::vector<double> Section::numbers(std::string_view key, std::string_view doc,
 std::array<double, 3> Section::require_vec3(std::string_view key, std::string_view doc, Bounds b) {
   declare(key);
   const YAML::Node n = child(key);
-  if (!n) fail("", "missing required key '" + std::string(key) + "' (" + std::string(doc) + ")");
+  if (!n) fail_missing(key, "(" + std::string(doc) + ")");
   if (!n.IsSequence() || n.size() != 3) fail(key, "expected a list of 3 numbers, e.g. [0, 0, 1]");
   std::array<double, 3> v{};
   for (int i = 0; i < 3; ++i) v[i] = convert<double>(key, n[i], b);
@@ -344,6 +343,17 @@ std::vector<Section> Section::list(std::string_view key, std::string_view doc) {
     out.emplace_back(n[i], source_, key_path(key) + "[" + std::to_string(i) + "]");
   }
   return out;
+}
+
+void Section::fail_missing(std::string_view key, const std::string& expected) const {
+  std::string given;
+  if (node_.IsMap())
+    for (const auto& kv : node_) {
+      const auto k = kv.first.as<std::string>();
+      if (k != key && !did_you_mean(k, {std::string(key)}).empty()) given = k;
+    }
+  fail("", "missing required key '" + std::string(key) + "' " + expected +
+               (given.empty() ? "" : "; '" + given + "' is given: a misspelling of it?"));
 }
 
 void Section::finish() const {

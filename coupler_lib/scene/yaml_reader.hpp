@@ -111,6 +111,8 @@ class Section {
   YAML::Node child(std::string_view key) const;
   std::string key_path(std::string_view key) const;
   void declare(std::string_view key);
+  // A required key is absent; names a given key that looks like a misspelling of it.
+  [[noreturn]] void fail_missing(std::string_view key, const std::string& expected) const;
   void record(std::string_view key, const std::string& value, bool defaulted, std::string_view doc,
               std::string json);
   template <class T>

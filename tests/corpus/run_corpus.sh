@@ -3,8 +3,9 @@
 # how). Each goes through fluid_app --check, dem_app --check and a real coupled launch
 # (mpirun -np 1 fluid_app : -np 1 dem_app); each of the three must end within 10 s with a
 # non-zero status and an error message, never a crash, a core dump, a hang or MPI's own noise.
-# Both --check runs must refuse with the same message; a case with a line "# expect: TEXT" must
-# be refused with a message that holds TEXT. base.yaml, the scene the cases depart
+# Both --check runs must refuse with the same message, and every case names the reason it must be
+# refused for in a line "# expect: TEXT": the message must hold TEXT (so a case refused for
+# another mistake than its own fails). base.yaml, the scene the cases depart
 # from, must pass both --check runs (so a case fails for its own mistake only).
 # Usage: run_corpus.sh BUILD_DIR CORPUS_DIR
 set -uo pipefail
@@ -43,7 +44,11 @@ for scene in "$corpus"/scenes/*.yaml; do
   mf=$(message "$work/f.log") md=$(message "$work/d.log")
   [ "$mf" = "$md" ] || why+=" the two --check messages differ;"
   expect=$(sed -n 's/^# expect: //p' "$scene")
-  if [ -n "$expect" ] && [[ "$mf" != *"$expect"* ]]; then why+=" the message lacks '$expect';"; fi
+  if [ -z "$expect" ]; then
+    why+=" no '# expect:' line;"
+  elif [ -z "$mf" ] || [[ "$mf" != *"$expect"* ]]; then
+    why+=" the message lacks '$expect';"
+  fi
   if [ -n "$why" ]; then
     failed=$((failed + 1))
     echo "FAIL $name:$why"
