@@ -187,9 +187,9 @@ def reference_markdown(schema):
         "SI; a number without a unit is dimensionless (or a count).",
     ]
     for m in schema["mappings"]:
-        out += ["", f"## {title(m['path'])}", "", m["meaning"][0].upper() + m["meaning"][1:] + ".", ""]
+        out += ["", f"## {title(m['path'])}", "", m["meaning"][0].upper() + m["meaning"][1:] + "."]
         if m["keys"]:
-            out.append(key_table(m["keys"]).rstrip("\n"))
+            out += ["", key_table(m["keys"]).rstrip("\n")]
         groups = groups_text(m)
         if groups:
             out += [""] + groups
