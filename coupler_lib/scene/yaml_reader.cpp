@@ -447,6 +447,14 @@ void Section::finish() const {
   for (const auto& kv : node_) {
     const auto key = kv.first.as<std::string>();
     if (declared_.count(key)) continue;
+    // A key the schema allows here but the reader left unread would be refused as unknown while
+    // --schema and the JSON Schema accept it: a bug of the reader, not of the scene.
+    auto in = [&](const std::vector<KeySchema>& ks) {
+      return std::any_of(ks.begin(), ks.end(), [&](const KeySchema& k) { return k.name == key; });
+    };
+    if (in(schema_->keys) || (alternative_ && in(alternative_->keys)))
+      throw std::logic_error("scene schema: '" + key_path(key) +
+                             "' is declared in the schema but its reader did not read it");
     std::string hint = did_you_mean(key, known);
     std::string loc = source_->file;
     if (!kv.first.Mark().is_null()) loc += ":" + std::to_string(kv.first.Mark().line + 1);

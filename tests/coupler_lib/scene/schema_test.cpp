@@ -117,6 +117,15 @@ TEST(SceneSchema, ReadersReadOnlyDeclaredKeysAsDeclared) {
   EXPECT_THROW(b.get<int>("only_a"), std::logic_error);  // a key of the other alternative
 }
 
+TEST(SceneSchema, AKeyTheSchemaAllowsButTheReaderSkipsIsABug) {
+  Section s = Section::load_string("kind: a\nx: 2\n", "t.yaml", tiny_schema());
+  s.require_choice("kind");
+  EXPECT_THROW(s.finish(), std::logic_error);
+  Section u = Section::load_string("kind: a\nz: 2\n", "t.yaml", tiny_schema());
+  u.require_choice("kind");
+  EXPECT_THROW(u.finish(), SceneError);  // unknown to the schema: the scene's mistake
+}
+
 TEST(SceneSchema, DefaultsOfTheWrongTypeAreRefused) {
   EXPECT_THROW(key::integer("n", "count").or_default(0.5), std::logic_error);
   EXPECT_THROW(key::choice("c", {"a"}, "choice").or_default("z"), std::logic_error);
