@@ -138,7 +138,9 @@ def default_text(k):
 
 
 def cell(text):
-    return text.replace("|", "\\|").replace("\n", " ")
+    # Outside code spans a `<name>` would be read as an HTML tag and vanish.
+    parts = text.replace("|", "\\|").replace("\n", " ").split("`")
+    return "`".join(p if i % 2 else p.replace("<", "&lt;") for i, p in enumerate(parts))
 
 
 def key_table(keys):

@@ -93,6 +93,10 @@ const MappingSchema& dem_output_schema() {
            .or_default(0.0)
            .within(Bounds::non_negative())
            .in("s"),
+       key::boolean("surfaces",
+                    "body snapshots also carry each body's surface (<name>_surfaces.xdmf: "
+                    "ParaView shows the shapes, not points)")
+           .or_default(true),
        key::text("directory", "output directory (relative to the scene)").or_default(".")}};
   return m;
 }
@@ -216,6 +220,7 @@ DemParams parse_dem(Section& s) {
     auto o = s.section_or_defaults("output");
     p.output.interval = o.get<double>("interval");
     p.output.energy_interval = o.get<double>("energy_interval");
+    p.output.surfaces = o.get<bool>("surfaces");
     p.output.directory = o.get<std::string>("directory");
     // Kept as written: the programs resolve it against the scene file's folder where they use it.
     check_output_directory(o, "directory", resolve_scene_path(o.file(), p.output.directory));
