@@ -18,6 +18,8 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       c.version = true;
     else if (a == "--check")
       c.check = true;
+    else if (a == "--schema")
+      c.schema = true;
     else if (a == "--json")
       c.json = c.check = true;
     else if (a == "--replay")
@@ -34,7 +36,10 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
       throw std::invalid_argument("more than one scene file given ('" + c.scene + "', '" + a +
                                   "')");
   }
-  if (!c.help && !c.version && c.scene.empty()) throw std::invalid_argument("no scene file given");
+  if (!c.help && !c.version && !c.schema && c.scene.empty())
+    throw std::invalid_argument("no scene file given");
+  if (c.schema && (c.check || !c.scene.empty() || !c.replay.empty() || !c.restart.empty()))
+    throw std::invalid_argument("--schema takes no scene and no other option");
   if (!c.replay.empty() && !c.restart.empty())
     throw std::invalid_argument("--replay and --restart cannot be combined");
   if (!c.log_level.empty() && c.log_level != "trace" && c.log_level != "debug" &&
@@ -44,11 +49,13 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
 }
 
 std::string usage(const std::string& app, const std::string& what) {
-  return "usage: " + app + " [options] scene.yaml\n" + what +
+  return "usage: " + app + " [options] scene.yaml\n       " + app + " --schema\n" + what +
          "\n\noptions:\n"
          "  --check           validate the scene, print the derived parameters, do not run\n"
          "  --json            with --check: print the resolved scene as JSON on stdout\n"
          "                    (every key with its default, derived numbers, bodies)\n"
+         "  --schema          print the schema of every scene key as JSON (the same from both\n"
+         "                    programs; docs/scene-reference.md is generated from it)\n"
          "  --replay FILE     run this side alone, fed from a recording (HDF5)\n"
          "  --restart CKPT    continue a coupled run from a checkpoint (a .fluid.h5 or .dem.h5\n"
          "                    file, their common prefix, or the checkpoint folder: the newest)\n"

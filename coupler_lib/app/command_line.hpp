@@ -1,6 +1,7 @@
 #pragma once
 // The command line both binaries share:
 //   APP [--check [--json]] [--replay FILE] [--restart CHECKPOINT] [--log-level L] scene.yaml
+//   APP --schema
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@ struct CommandLine {
   bool json = false;  // --check prints the resolved scene as JSON on stdout (implies check)
   bool help = false;
   bool version = false;
+  bool schema = false;    // print the scene schema (coupler_lib/scene/schema.hpp) and stop
   std::string replay;     // recording to replay this side from
   std::string restart;    // checkpoint (either half, its prefix or its folder) to continue from
   std::string log_level;  // overrides the scene's log_level

@@ -91,7 +91,7 @@ StartOutcome start_up(AppContext& ctx, int argc, char** argv, double memory_byte
   } catch (const std::invalid_argument& e) {
     return {Start::fail, e.what(), true};
   }
-  if (ctx.cli.help || ctx.cli.version) return {Start::stop, "", false};
+  if (ctx.cli.help || ctx.cli.version || ctx.cli.schema) return {Start::stop, "", false};
   try {
     ctx.scene = load_scene(ctx.cli.scene);
     ctx.scene_file = ctx.cli.scene;
@@ -154,6 +154,8 @@ int run_app(int argc, char** argv, const AppInfo& info,
   if (worst == static_cast<int>(Start::stop)) {
     if (ctx.rank == 0 && ctx.cli.help) std::cout << usage(info.program, info.description);
     if (ctx.rank == 0 && ctx.cli.version) std::cout << info.program << " " << LBDEM_VERSION << "\n";
+    // The schema is of the scene file, which both programs read: the same text from either.
+    if (ctx.rank == 0 && ctx.cli.schema) std::cout << scene_schema_json() << std::flush;
     return finish(0);
   }
   // --json keeps stderr to warnings, so a tool reads stdout and shows stderr only on failure.

@@ -82,28 +82,38 @@ BodyParams checked_body(const FileBody& raw, const BodiesFileEntry& e,
   return b;
 }
 
+std::vector<KeySchema> bodies_file_keys() {
+  return {key::text("file", "bodies file, CSV or HDF5 (docs/study.md), relative to the scene")
+              .required(),
+          key::choice("format", {"csv", "hdf5"},
+                      "format of the bodies file (default: hdf5 for .h5 and .hdf5, else csv)")
+              .derived_as("hdf5 for a file ending in .h5 or .hdf5, else csv"),
+          key::text("shape", "shape of every body of the file")
+              .absent_means("each body's shape is a column of the file"),
+          key::number("density", "density of every body of the file in kg/m^3")
+              .absent_means("each body's density is a column of the file")
+              .within(Bounds::positive())
+              .in("kg/m^3")};
+}
+
 std::vector<BodyParams> read_bodies_file(Section& entry, const std::vector<ShapeParams>& shapes) {
-  const auto name = entry.require<std::string>(
-      "file", "bodies file, CSV or HDF5 (docs/study.md), relative to the scene");
+  const auto name = entry.require<std::string>("file");
   std::filesystem::path path(name);
   if (path.is_relative()) path = std::filesystem::path(entry.file()).parent_path() / path;
   const std::string ext = path.extension().string();
   const std::string format =
-      entry.choice("format", ext == ".h5" || ext == ".hdf5" ? "hdf5" : "csv", {"csv", "hdf5"},
-                   "format of the bodies file (default: hdf5 for .h5 and .hdf5, else csv)");
+      entry.choice("format", ext == ".h5" || ext == ".hdf5" ? "hdf5" : "csv");
   if (!std::ifstream(path)) entry.fail("file", "cannot open '" + path.string() + "'");
 
   BodiesFileEntry e;
   e.path = path.string();
   if (entry.has("shape")) {
-    const auto s = entry.require<std::string>("shape", "shape of every body of the file");
+    const auto s = entry.require<std::string>("shape");
     const int k = shape_index(s, shapes);
     if (k < 0) entry.fail("shape", "no shape named '" + s + "' in the shapes catalogue");
     e.shape = k;
   }
-  if (entry.has("density"))
-    e.density = entry.require<double>("density", "density of every body of the file in kg/m^3",
-                                      Bounds::positive());
+  if (entry.has("density")) e.density = entry.require<double>("density");
   entry.finish();
   e.where = entry.where("file");
   return format == "hdf5" ? read_bodies_hdf5(e, shapes) : read_bodies_csv(e, shapes);

@@ -25,6 +25,8 @@
 namespace lbdem {
 
 // Reads the bodies of one `file:` entry of the `bodies:` list.
+// The keys of a `bodies:` entry that names a file (its alternative in body_schema()).
+std::vector<KeySchema> bodies_file_keys();
 std::vector<BodyParams> read_bodies_file(Section& entry, const std::vector<ShapeParams>& shapes);
 
 }  // namespace lbdem

@@ -45,7 +45,7 @@ std::array<double, 4> random_quaternion(SplitMix64& rng) {
 }
 
 std::array<double, 4> read_quaternion(Section& s, const std::string& key) {
-  auto q = s.numbers(key, "orientation quaternion [w, x, y, z], shape frame -> space frame");
+  auto q = s.numbers(key);
   if (q.size() != 4)
     s.fail(key, "expected 4 numbers [w, x, y, z], got " + std::to_string(q.size()));
   const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
@@ -54,7 +54,7 @@ std::array<double, 4> read_quaternion(Section& s, const std::string& key) {
 }
 
 int find_shape(Section& s, const std::vector<ShapeParams>& shapes) {
-  const auto name = s.require<std::string>("shape", "name of a shape in the catalogue");
+  const auto name = s.require<std::string>("shape");
   for (size_t i = 0; i < shapes.size(); ++i)
     if (shapes[i].name == name) return static_cast<int>(i);
   s.fail("shape", "no shape named '" + name + "' in the shapes catalogue");
@@ -63,31 +63,27 @@ int find_shape(Section& s, const std::vector<ShapeParams>& shapes) {
 BodyParams parse_body(Section& s, const std::vector<ShapeParams>& shapes) {
   BodyParams b;
   b.shape = find_shape(s, shapes);
-  b.position = s.require_vec3("position", "centre of mass in m");
+  b.position = s.require_vec3("position");
   if (s.has("orientation")) b.orientation = read_quaternion(s, "orientation");
-  b.velocity = s.vec3("velocity", {0, 0, 0}, "initial velocity in m/s");
-  b.angular_velocity = s.vec3("angular_velocity", {0, 0, 0}, "initial angular velocity in rad/s");
-  b.density = s.require<double>("density", "body density in kg/m^3", Bounds::positive());
+  b.velocity = s.vec3("velocity");
+  b.angular_velocity = s.vec3("angular_velocity");
+  b.density = s.require<double>("density");
   s.finish();
   return b;
 }
 
 BodyGenerator parse_generator(Section& s, const std::vector<ShapeParams>& shapes) {
   BodyGenerator g;
-  g.pattern = s.require_choice("generate", {"lattice", "random"},
-                               "lattice: simple cubic, filled from the lower corner; random: "
-                               "random sequential addition");
+  g.pattern = s.require_choice("generate");
   g.shape = find_shape(s, shapes);
   const auto extent = analytic_extent(shapes[static_cast<size_t>(g.shape)]);
-  g.density = s.require<double>("density", "body density in kg/m^3", Bounds::positive());
-  auto region = s.section("region", "box the bodies lie in entirely");
-  g.lo = region.require_vec3("lo", "lower corner in m");
-  g.hi = region.require_vec3("hi", "upper corner in m");
+  g.density = s.require<double>("density");
+  auto region = s.section("region");
+  g.lo = region.require_vec3("lo");
+  g.hi = region.require_vec3("hi");
   region.finish();
   if (s.has("min_distance") || !extent) {
-    g.min_distance = s.require<double>(
-        "min_distance", "smallest centre distance in m (default: twice the bounding radius)",
-        Bounds::positive());
+    g.min_distance = s.require<double>("min_distance");
     g.bounding_radius = 0.5 * g.min_distance;
   } else {
     g.bounding_radius = extent->bounding_radius;
@@ -97,10 +93,9 @@ BodyGenerator parse_generator(Section& s, const std::vector<ShapeParams>& shapes
   if (by_count == s.has("solid_fraction"))
     s.fail("", "a generator needs exactly one of 'count' and 'solid_fraction'");
   if (by_count) {
-    g.count = s.require<long>("count", "number of bodies", Bounds::at_least(1));
+    g.count = s.require<long>("count");
   } else {
-    const double phi =
-        s.require<double>("solid_fraction", "body volume / region volume", {0.0, 1.0, true, true});
+    const double phi = s.require<double>("solid_fraction");
     if (!extent)
       s.fail("solid_fraction", "needs a shape with a known volume (not stl); use 'count'");
     double v = 1;
@@ -108,14 +103,13 @@ BodyGenerator parse_generator(Section& s, const std::vector<ShapeParams>& shapes
     g.count = std::lround(phi * v / extent->volume);
     if (g.count < 1) s.fail("solid_fraction", "gives no body at all in this region");
   }
-  g.seed = static_cast<std::uint64_t>(
-      s.get<long long>("seed", 1, "random seed (orientations, random positions)"));
+  g.seed = static_cast<std::uint64_t>(s.get<long long>("seed"));
   if (s.has("orientation")) {
     g.random_orientation = false;
     g.orientation = read_quaternion(s, "orientation");
   }
-  g.velocity = s.vec3("velocity", {0, 0, 0}, "initial velocity of every body in m/s");
-  g.angular_velocity = s.vec3("angular_velocity", {0, 0, 0}, "initial angular velocity in rad/s");
+  g.velocity = s.vec3("velocity");
+  g.angular_velocity = s.vec3("angular_velocity");
   s.finish();
   return g;
 }
@@ -208,9 +202,83 @@ std::vector<BodyParams> generate_bodies(const BodyGenerator& g, const Section& w
   return out;
 }
 
+namespace {
+
+const MappingSchema& region_schema() {
+  static const MappingSchema m{"bodies[].region",
+                               "box the bodies lie in entirely",
+                               {key::vec3("lo", "lower corner in m").required().in("m"),
+                                key::vec3("hi", "upper corner in m").required().in("m")}};
+  return m;
+}
+
+KeySchema orientation(std::string absent) {
+  return key::vector("orientation", 4,
+                     "orientation quaternion [w, x, y, z], shape frame -> space frame")
+      .absent_means(std::move(absent));
+}
+
+}  // namespace
+
+const MappingSchema& body_schema() {
+  static const MappingSchema m{
+      "bodies[]",
+      "one entry of bodies: a single body, a generator (generate: ...) or a bodies file (file: "
+      "...)",
+      {},
+      {{"generate",
+        "",
+        {key::choice("generate", {"lattice", "random"},
+                     "lattice: simple cubic, filled from the lower corner; random: random "
+                     "sequential addition")
+             .required(),
+         key::text("shape", "name of a shape in the catalogue").required(),
+         key::number("density", "body density in kg/m^3")
+             .required()
+             .within(Bounds::positive())
+             .in("kg/m^3"),
+         key::section("region", region_schema(), "box the bodies lie in entirely").required(),
+         key::number("min_distance",
+                     "smallest centre distance in m (default: twice the bounding radius)")
+             .derived_as("twice the shape's bounding radius; required for stl shapes")
+             .within(Bounds::positive())
+             .in("m"),
+         key::integer("count", "number of bodies")
+             .absent_means("give solid_fraction instead")
+             .within(Bounds::at_least(1)),
+         key::number("solid_fraction", "body volume / region volume")
+             .absent_means("give count instead")
+             .within({0.0, 1.0, true, true}),
+         key::integer("seed", "random seed (orientations, random positions)").or_default(1),
+         orientation("random orientations"),
+         key::vec3("velocity", "initial velocity of every body in m/s")
+             .or_default({0, 0, 0})
+             .in("m/s"),
+         key::vec3("angular_velocity", "initial angular velocity in rad/s")
+             .or_default({0, 0, 0})
+             .in("rad/s")},
+        {{"count", "solid_fraction"}}},
+       {"file", "", bodies_file_keys(), {}},
+       {"",
+        "",
+        {key::text("shape", "name of a shape in the catalogue").required(),
+         key::vec3("position", "centre of mass in m").required().in("m"),
+         orientation("the shape frame (identity)"),
+         key::vec3("velocity", "initial velocity in m/s").or_default({0, 0, 0}).in("m/s"),
+         key::vec3("angular_velocity", "initial angular velocity in rad/s")
+             .or_default({0, 0, 0})
+             .in("rad/s"),
+         key::number("density", "body density in kg/m^3")
+             .required()
+             .within(Bounds::positive())
+             .in("kg/m^3")},
+        {}}}};
+  return m;
+}
+
 std::vector<BodyParams> parse_bodies(Section& root, const std::vector<ShapeParams>& shapes) {
   std::vector<BodyParams> out;
-  for (auto& s : root.list("bodies", "bodies: single bodies, generators and files")) {
+  for (auto& s : root.list("bodies")) {
     if (s.has("generate")) {
       const auto g = parse_generator(s, shapes);
       const auto placed = generate_bodies(g, s);

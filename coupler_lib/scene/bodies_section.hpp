@@ -51,6 +51,8 @@ struct BodyGenerator {
 // Places the bodies of a generator; throws SceneError (via `where`) when they do not fit.
 std::vector<BodyParams> generate_bodies(const BodyGenerator& g, const Section& where);
 
+// The schema of one entry of `bodies:` (a body, a generator or a bodies file).
+const MappingSchema& body_schema();
 std::vector<BodyParams> parse_bodies(Section& root, const std::vector<ShapeParams>& shapes);
 
 }  // namespace lbdem

@@ -22,6 +22,7 @@ struct CouplingParams {
   bool overlap = false;
 };
 
+const MappingSchema& coupling_schema();
 CouplingParams parse_coupling(Section& s);
 
 }  // namespace lbdem

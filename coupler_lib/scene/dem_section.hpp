@@ -65,6 +65,7 @@ struct DemParams {
   DemLubrication lubrication;
 };
 
+const MappingSchema& dem_schema();
 DemParams parse_dem(Section& s);
 
 // Resolves dem.lubrication's cutoff and viscosity from the fluid section (both programs call it

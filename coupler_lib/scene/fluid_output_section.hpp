@@ -71,6 +71,10 @@ struct FluidOutputParams {
 
 // Reads the three optional sub-sections of `fluid:`. `units` and `cells` are the already
 // resolved lattice (time step for the intervals, node counts for slices).
+// The schemas of fluid.output, fluid.stability and fluid.validation.
+const MappingSchema& fluid_output_schema();
+const MappingSchema& stability_schema();
+const MappingSchema& validation_schema();
 FluidOutputParams parse_fluid_output(Section& fluid, const UnitConverter& units,
                                      const std::array<int, 3>& cells);
 

@@ -100,6 +100,7 @@ struct FluidParams {
   bool periodic(int axis) const { return faces[2 * axis].type == FaceType::periodic; }
 };
 
+const MappingSchema& fluid_schema();
 FluidParams parse_fluid(Section& s);
 
 const char* face_name(int face);  // "x_min", ..., "z_max"

@@ -19,31 +19,68 @@ std::uint64_t fnv1a(const std::string& bytes) {
   return h;
 }
 
+namespace {
+
+const MappingSchema& time_schema() {
+  static const MappingSchema m{
+      "time",
+      "simulated time span",
+      {key::number("end", "simulated end time in s").required().within(Bounds::positive()).in("s"),
+       key::number("progress_interval", "wall seconds between progress lines")
+           .or_default(10.0)
+           .within(Bounds::positive())
+           .in("s")}};
+  return m;
+}
+
+}  // namespace
+
+const MappingSchema& scene_schema() {
+  static const MappingSchema m{
+      "",
+      "the scene file: one YAML mapping of sections, read by both programs",
+      {key::text("name", "name used in output file names (letters, digits, - _ .)")
+           .or_default("scene"),
+       key::choice("log_level", {"trace", "debug", "info", "warn", "error"},
+                   "logging level (the command line's --log-level wins)")
+           .or_default("info"),
+       key::section("time", time_schema(), "simulated time span").required(),
+       key::section("fluid", fluid_schema(), "lattice Boltzmann fluid")
+           .absent_means("no fluid: a DEM-only scene"),
+       key::section("dem", dem_schema(), "discrete element bodies (LAMMPS)")
+           .absent_means("no DEM: a fluid-only scene"),
+       key::list("shapes", shape_schema(), "catalogue of body shapes").absent_means("no shapes"),
+       key::list("bodies", body_schema(), "bodies: single bodies, generators and files")
+           .absent_means("no bodies"),
+       key::section("coupling", coupling_schema(), "fluid-DEM packet exchange")
+           .absent_means("all defaults")},
+      {},
+      {},
+      {{"fluid", "dem"}}};
+  return m;
+}
+
 Scene parse_scene(Section root, std::uint64_t hash) {
   Scene sc;
   sc.file = root.file();
   sc.hash = hash;
   sc.source = root.source();
-  sc.name = root.get<std::string>("name", "scene",
-                                  "name used in output file names (letters, digits, - _ .)");
+  sc.name = root.get<std::string>("name");
   check_plain_name(root, "name", sc.name);
-  sc.log_level = root.choice("log_level", "info", {"trace", "debug", "info", "warn", "error"},
-                             "logging level (the command line's --log-level wins)");
+  sc.log_level = root.choice("log_level");
   {
-    auto t = root.section("time", "simulated time span");
-    sc.time.end = t.require<double>("end", "simulated end time in s", Bounds::positive());
-    sc.time.progress_interval = t.get<double>(
-        "progress_interval", 10.0, "wall seconds between progress lines", Bounds::positive());
+    auto t = root.section("time");
+    sc.time.end = t.require<double>("end");
+    sc.time.progress_interval = t.get<double>("progress_interval");
     t.finish();
   }
-  if (auto f = root.optional_section("fluid", "lattice Boltzmann fluid"))
-    sc.fluid = parse_fluid(*f);
-  auto dem = root.optional_section("dem", "discrete element bodies (LAMMPS)");
+  if (auto f = root.optional_section("fluid")) sc.fluid = parse_fluid(*f);
+  auto dem = root.optional_section("dem");
   if (dem) sc.dem = parse_dem(*dem);
   sc.shapes = parse_shapes(root);
   sc.bodies = parse_bodies(root, sc.shapes);
   {
-    auto c = root.section_or_defaults("coupling", "fluid-DEM packet exchange");
+    auto c = root.section_or_defaults("coupling");
     sc.coupling = parse_coupling(c);
   }
   root.finish();

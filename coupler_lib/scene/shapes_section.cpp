@@ -18,8 +18,8 @@ std::string resolve(const Section& s, const std::string& file) {
   return p.lexically_normal().string();
 }
 
-std::string existing_file(Section& s, std::string_view key, std::string_view doc) {
-  const auto file = s.require<std::string>(key, doc);
+std::string existing_file(Section& s, std::string_view key) {
+  const auto file = s.require<std::string>(key);
   const auto path = resolve(s, file);
   if (std::filesystem::is_directory(path))
     s.fail(key, "'" + file + "' is a folder, expected a file (" + path + ")");
@@ -28,27 +28,56 @@ std::string existing_file(Section& s, std::string_view key, std::string_view doc
   return path;
 }
 
+const MappingSchema& clump_schema() {
+  static const MappingSchema m{
+      "shapes[].clump",
+      "contact clump: {file: path} or {method: ...}",
+      {key::choice("method", {"surface", "fill"}, "clump generator (or give 'file' instead)")
+           .absent_means("give file instead")},
+      {{"file",
+        "",
+        {key::text("file", "clump file, one sphere 'x y z r' per line").required(),
+         key::number("scale", "multiplies clump coordinates and radii")
+             .or_default(1.0)
+             .within(Bounds::positive())},
+        {}},
+       {"method",
+        "surface",
+        {key::integer("grid", "grid points per edge of the bounding box")
+             .required()
+             .within(Bounds::at_least(2)),
+         key::number("radius_ratio", "sphere radius / grid spacing")
+             .or_default(1.0)
+             .within(Bounds::positive()),
+         key::boolean("center_sphere", "add the largest inscribed sphere at the centre")
+             .or_default(true)},
+        {}},
+       {"method",
+        "fill",
+        {key::integer("spheres", "target number of spheres")
+             .required()
+             .within(Bounds::at_least(1))},
+        {}}},
+      {{"file", "method"}}};
+  return m;
+}
+
 ClumpParams parse_clump(Section& c) {
   ClumpParams p;
   if (c.has("file")) {
     if (c.has("method"))
       c.fail("method", "give either 'file' (a clump file) or 'method' (generate), not both");
     p.source = "file";
-    p.file = existing_file(c, "file", "clump file, one sphere 'x y z r' per line");
-    p.scale =
-        c.get<double>("scale", 1.0, "multiplies clump coordinates and radii", Bounds::positive());
+    p.file = existing_file(c, "file");
+    p.scale = c.get<double>("scale");
   } else {
-    p.source =
-        c.require_choice("method", {"surface", "fill"}, "clump generator (or give 'file' instead)");
+    p.source = c.require_choice("method");
     if (p.source == "fill") {
-      p.spheres = c.require<int>("spheres", "target number of spheres", Bounds::at_least(1));
+      p.spheres = c.require<int>("spheres");
     } else {
-      p.grid =
-          c.require<int>("grid", "grid points per edge of the bounding box", Bounds::at_least(2));
-      p.radius_ratio =
-          c.get<double>("radius_ratio", 1.0, "sphere radius / grid spacing", Bounds::positive());
-      p.center_sphere =
-          c.get<bool>("center_sphere", true, "add the largest inscribed sphere at the centre");
+      p.grid = c.require<int>("grid");
+      p.radius_ratio = c.get<double>("radius_ratio");
+      p.center_sphere = c.get<bool>("center_sphere");
     }
   }
   c.finish();
@@ -57,35 +86,85 @@ ClumpParams parse_clump(Section& c) {
 
 }  // namespace
 
+const MappingSchema& shape_schema() {
+  static const MappingSchema m{
+      "shapes[]",
+      "a body shape of the catalogue",
+      {key::text("name", "shape name used by bodies").required(),
+       key::choice("kind", {"sphere", "cube", "cuboid", "ellipsoid", "stl"}, "shape kind")
+           .required(),
+       key::number("voxel_size",
+                   "voxel spacing in m (0: half the fluid spacing, or size/40 without a fluid)")
+           .or_default(0.0)
+           .within(Bounds::non_negative())
+           .in("m"),
+       key::number("hydrodynamic_scale",
+                   "factor on the shape's size as the fluid sees it (1: the true shape; mass and "
+                   "contacts always use the true shape)")
+           .or_default(1.0)
+           .within(Bounds::closed(0.5, 2.0)),
+       key::section("clump", clump_schema(), "contact clump: {file: path} or {method: ...}")
+           .absent_means("generated from the shape")},
+      {{"kind",
+        "sphere",
+        {key::number("diameter", "sphere diameter in m")
+             .required()
+             .within(Bounds::positive())
+             .in("m")},
+        {}},
+       {"kind",
+        "cube",
+        {key::number("edge", "cube edge in m").required().within(Bounds::positive()).in("m")},
+        {}},
+       {"kind",
+        "cuboid",
+        {key::vec3("edges", "cuboid edges [a, b, c] along x, y, z in m")
+             .required()
+             .within(Bounds::positive())
+             .in("m")},
+        {}},
+       {"kind",
+        "ellipsoid",
+        {key::vec3("semi_axes", "ellipsoid semi-axes [a, b, c] along x, y, z in m")
+             .required()
+             .within(Bounds::positive())
+             .in("m")},
+        {}},
+       {"kind",
+        "stl",
+        {key::text("file", "STL file (ASCII or binary), relative to the scene").required(),
+         key::number("scale", "multiplies the STL coordinates (to m)")
+             .or_default(1.0)
+             .within(Bounds::positive())},
+        {}}}};
+  return m;
+}
+
 std::vector<ShapeParams> parse_shapes(Section& root) {
   std::vector<ShapeParams> out;
   std::set<std::string> names;
-  for (auto& s : root.list("shapes", "catalogue of body shapes")) {
+  for (auto& s : root.list("shapes")) {
     ShapeParams sh;
     sh.where = s.where("");
-    sh.name = s.require<std::string>("name", "shape name used by bodies");
+    sh.name = s.require<std::string>("name");
     if (!names.insert(sh.name).second)
       s.fail("name", "a shape named '" + sh.name + "' is already in the catalogue");
-    sh.kind =
-        s.require_choice("kind", {"sphere", "cube", "cuboid", "ellipsoid", "stl"}, "shape kind");
+    sh.kind = s.require_choice("kind");
     if (sh.kind == "sphere") {
-      sh.size = s.require<double>("diameter", "sphere diameter in m", Bounds::positive());
+      sh.size = s.require<double>("diameter");
       sh.extents = {sh.size / 2, sh.size / 2, sh.size / 2};
     } else if (sh.kind == "cube") {
-      sh.size = s.require<double>("edge", "cube edge in m", Bounds::positive());
+      sh.size = s.require<double>("edge");
       sh.extents = {sh.size, sh.size, sh.size};
     } else if (sh.kind == "cuboid") {
-      sh.extents =
-          s.require_vec3("edges", "cuboid edges [a, b, c] along x, y, z in m", Bounds::positive());
+      sh.extents = s.require_vec3("edges");
       sh.size = *std::max_element(sh.extents.begin(), sh.extents.end());
     } else if (sh.kind == "ellipsoid") {
-      sh.extents = s.require_vec3("semi_axes", "ellipsoid semi-axes [a, b, c] along x, y, z in m",
-                                  Bounds::positive());
+      sh.extents = s.require_vec3("semi_axes");
       sh.size = 2 * *std::max_element(sh.extents.begin(), sh.extents.end());
     } else {
-      sh.file = existing_file(s, "file", "STL file (ASCII or binary), relative to the scene");
-      sh.scale =
-          s.get<double>("scale", 1.0, "multiplies the STL coordinates (to m)", Bounds::positive());
+      sh.file = existing_file(s, "file");
+      sh.scale = s.get<double>("scale");
       try {
         TriangleMesh mesh = read_stl(sh.file);
         Eigen::Vector3d lo, hi;
@@ -96,16 +175,9 @@ std::vector<ShapeParams> parse_shapes(Section& root) {
         s.fail("file", e.what());
       }
     }
-    sh.voxel_size = s.get<double>("voxel_size", 0.0,
-                                  "voxel spacing in m (0: half the fluid spacing, or size/40 "
-                                  "without a fluid)",
-                                  Bounds::non_negative());
-    sh.hydrodynamic_scale = s.get<double>(
-        "hydrodynamic_scale", 1.0,
-        "factor on the shape's size as the fluid sees it (1: the true shape; mass and contacts "
-        "always use the true shape)",
-        Bounds::closed(0.5, 2.0));
-    if (auto c = s.optional_section("clump", "contact clump: {file: path} or {method: ...}"))
+    sh.voxel_size = s.get<double>("voxel_size");
+    sh.hydrodynamic_scale = s.get<double>("hydrodynamic_scale");
+    if (auto c = s.optional_section("clump"))
       sh.clump = parse_clump(*c);
     else
       sh.clump.source = "default";

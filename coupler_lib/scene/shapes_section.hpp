@@ -16,6 +16,8 @@
 
 namespace lbdem {
 
+// The schema of one entry of `shapes:`.
+const MappingSchema& shape_schema();
 std::vector<ShapeParams> parse_shapes(Section& root);
 
 }  // namespace lbdem

@@ -5,36 +5,29 @@
 #include <cstdint>
 #include <filesystem>
 #include <sstream>
+#include <stdexcept>
+#include <variant>
 
 #include "coupler_lib/scene/json_text.hpp"
 
 namespace lbdem {
 
-bool Bounds::contains(double v) const {
-  if (std::isnan(v)) return false;
-  if (lo_open ? !(v > lo) : !(v >= lo)) return false;
-  if (hi_open ? !(v < hi) : !(v <= hi)) return false;
-  return true;
-}
-
-std::string Bounds::describe() const {
-  std::ostringstream s;
-  const bool has_lo = std::isfinite(lo);
-  const bool has_hi = std::isfinite(hi);
-  if (has_lo && has_hi) {
-    s << "in " << (lo_open ? "(" : "[") << lo << ", " << hi << (hi_open ? ")" : "]");
-  } else if (has_lo) {
-    s << (lo_open ? "> " : ">= ") << lo;
-  } else if (has_hi) {
-    s << (hi_open ? "< " : "<= ") << hi;
-  } else {
-    s << "finite";
+Section::Section(YAML::Node node, std::shared_ptr<SceneSource> source, std::string path,
+                 const MappingSchema& schema)
+    : node_(std::move(node)), source_(std::move(source)), path_(std::move(path)), schema_(&schema) {
+  // The first alternative that applies: its discriminating key has its word, or is given, or
+  // (no key) none applied before it.
+  for (const Alternative& a : schema_->alternatives) {
+    const YAML::Node n = a.key.empty() ? YAML::Node() : node_[a.key];
+    const bool applies = a.key.empty()     ? true
+                         : a.value.empty() ? bool(n)
+                                           : (n && n.IsScalar() && n.Scalar() == a.value);
+    if (applies) {
+      alternative_ = &a;
+      break;
+    }
   }
-  return s.str();
 }
-
-Section::Section(YAML::Node node, std::shared_ptr<SceneSource> source, std::string path)
-    : node_(std::move(node)), source_(std::move(source)), path_(std::move(path)) {}
 
 namespace {
 
@@ -58,7 +51,7 @@ void reject_duplicate_keys(const YAML::Node& n, const std::string& file) {
 
 }  // namespace
 
-Section Section::load_file(const std::string& file) {
+Section Section::load_file(const std::string& file, const MappingSchema& schema) {
   auto src = std::make_shared<SceneSource>();
   src->file = file;
   YAML::Node root;
@@ -72,10 +65,11 @@ Section Section::load_file(const std::string& file) {
   }
   if (!root.IsMap()) throw SceneError(file + ": the scene must be a YAML mapping of sections");
   reject_duplicate_keys(root, file);
-  return Section(root, src, "");
+  return Section(root, src, "", schema);
 }
 
-Section Section::load_string(const std::string& text, const std::string& name) {
+Section Section::load_string(const std::string& text, const std::string& name,
+                             const MappingSchema& schema) {
   auto src = std::make_shared<SceneSource>();
   src->file = name;
   YAML::Node root;
@@ -87,7 +81,7 @@ Section Section::load_string(const std::string& text, const std::string& name) {
   }
   if (!root.IsMap()) throw SceneError(name + ": the scene must be a YAML mapping of sections");
   reject_duplicate_keys(root, name);
-  return Section(root, src, "");
+  return Section(root, src, "", schema);
 }
 
 bool Section::has(std::string_view key) const {
@@ -117,8 +111,30 @@ void Section::fail(std::string_view key, const std::string& what) const {
   throw SceneError(where(key) + ": " + what);
 }
 
-void Section::declare(std::string_view key) {
+const KeySchema& Section::spec(std::string_view key, const char* read_as) {
+  const KeySchema* found = nullptr;
+  for (const auto& k : schema_->keys)
+    if (k.name == key) found = &k;
+  if (!found && alternative_)
+    for (const auto& k : alternative_->keys)
+      if (k.name == key) found = &k;
+  if (!found)
+    throw std::logic_error(
+        "scene schema: the reader reads '" + key_path(key) + "', which the schema of '" +
+        schema_->path + "' does not declare" +
+        (alternative_ ? " (alternative " + alternative_->key + "=" + alternative_->value + ")"
+                      : std::string()));
+  const std::string as(read_as);
+  const KeyType t = found->type;
+  const bool fits = as == key_type_name(t) ||
+                    (as == "section" && t == KeyType::choice && found->mapping) ||
+                    (as == "vec3" && t == KeyType::vector && found->size == 3) ||
+                    (as == "numbers" && t == KeyType::vector);
+  if (!fits)
+    throw std::logic_error("scene schema: the reader reads '" + key_path(key) + "' as " + as +
+                           ", the schema declares a " + key_type_name(t));
   declared_.emplace(key);
+  return *found;
 }
 
 void Section::record(std::string_view key, const std::string& value, bool defaulted,
@@ -170,7 +186,7 @@ std::string to_json(const T& v) {
 }  // namespace
 
 template <class T>
-T Section::convert(std::string_view key, const YAML::Node& n, Bounds b) const {
+T Section::convert(std::string_view key, const YAML::Node& n, const Bounds& b) const {
   if (!n.IsScalar())
     fail(key, std::string("expected ") + type_name<T>() + ", got a " +
                   (n.IsSequence() ? "list" : "mapping"));
@@ -199,43 +215,96 @@ T Section::convert(std::string_view key, const YAML::Node& n, Bounds b) const {
   return v;
 }
 
+namespace {
 template <class T>
-T Section::get(std::string_view key, T fallback, std::string_view doc, Bounds b) {
-  declare(key);
+const char* schema_type() {
+  if constexpr (std::is_same_v<T, bool>)
+    return "boolean";
+  else if constexpr (std::is_integral_v<T>)
+    return "integer";
+  else if constexpr (std::is_floating_point_v<T>)
+    return "number";
+  else
+    return "string";
+}
+template <class T>
+T typed_default(const KeySchema& k) {
+  if constexpr (std::is_same_v<T, bool>)
+    return std::get<bool>(k.fallback);
+  else if constexpr (std::is_integral_v<T>)
+    return static_cast<T>(std::get<long long>(k.fallback));
+  else if constexpr (std::is_floating_point_v<T>)
+    return std::get<double>(k.fallback);
+  else
+    return std::get<std::string>(k.fallback);
+}
+void expect_need(const std::string& path, const KeySchema& k, bool derived) {
+  const bool ok =
+      derived ? (k.need == Need::derived || k.need == Need::optional) : k.need == Need::defaulted;
+  if (!ok)
+    throw std::logic_error("scene schema: '" + path + "' is read with " +
+                           (derived ? "a derived default" : "the schema's default") +
+                           " but declared " + need_name(k.need));
+}
+}  // namespace
+
+template <class T>
+T Section::read_scalar(std::string_view key, const KeySchema& k, const Bounds& b) {
   const YAML::Node n = child(key);
-  if (!n) {
-    record(key, to_text(fallback), true, doc, to_json(fallback));
+  if (!n) fail_missing(key, "(" + k.meaning + ")");
+  T v = convert<T>(key, n, b);
+  record(key, to_text(v), false, k.meaning, to_json(v));
+  return v;
+}
+
+template <class T>
+T Section::get(std::string_view key) {
+  const KeySchema& k = spec(key, schema_type<T>());
+  expect_need(key_path(key), k, false);
+  if (!has(key)) {
+    const T fallback = typed_default<T>(k);
+    record(key, to_text(fallback), true, k.meaning, to_json(fallback));
     return fallback;
   }
-  T v = convert<T>(key, n, b);
-  record(key, to_text(v), false, doc, to_json(v));
-  return v;
+  return read_scalar<T>(key, k, k.bounds);
 }
 
 template <class T>
-T Section::require(std::string_view key, std::string_view doc, Bounds b) {
-  declare(key);
-  const YAML::Node n = child(key);
-  if (!n) fail_missing(key, "(" + std::string(doc) + ")");
-  T v = convert<T>(key, n, b);
-  record(key, to_text(v), false, doc, to_json(v));
-  return v;
+T Section::get(std::string_view key, T fallback) {
+  const KeySchema& k = spec(key, schema_type<T>());
+  expect_need(key_path(key), k, true);
+  if (!has(key)) {
+    record(key, to_text(fallback), true, k.meaning, to_json(fallback));
+    return fallback;
+  }
+  return read_scalar<T>(key, k, k.bounds);
 }
 
-template double Section::get<double>(std::string_view, double, std::string_view, Bounds);
-template int Section::get<int>(std::string_view, int, std::string_view, Bounds);
-template long Section::get<long>(std::string_view, long, std::string_view, Bounds);
-template long long Section::get<long long>(std::string_view, long long, std::string_view, Bounds);
-template unsigned Section::get<unsigned>(std::string_view, unsigned, std::string_view, Bounds);
-template bool Section::get<bool>(std::string_view, bool, std::string_view, Bounds);
-template std::string Section::get<std::string>(std::string_view, std::string, std::string_view,
-                                               Bounds);
-template double Section::require<double>(std::string_view, std::string_view, Bounds);
-template int Section::require<int>(std::string_view, std::string_view, Bounds);
-template long Section::require<long>(std::string_view, std::string_view, Bounds);
-template long long Section::require<long long>(std::string_view, std::string_view, Bounds);
-template bool Section::require<bool>(std::string_view, std::string_view, Bounds);
-template std::string Section::require<std::string>(std::string_view, std::string_view, Bounds);
+template <class T>
+T Section::require(std::string_view key) {
+  const KeySchema& k = spec(key, schema_type<T>());
+  return read_scalar<T>(key, k, k.bounds);
+}
+
+template <class T>
+T Section::require(std::string_view key, Bounds tighter) {
+  const KeySchema& k = spec(key, schema_type<T>());
+  return read_scalar<T>(key, k, tighter);
+}
+
+template double Section::get<double>(std::string_view);
+template int Section::get<int>(std::string_view);
+template long Section::get<long>(std::string_view);
+template long long Section::get<long long>(std::string_view);
+template bool Section::get<bool>(std::string_view);
+template std::string Section::get<std::string>(std::string_view);
+template double Section::get<double>(std::string_view, double);
+template bool Section::get<bool>(std::string_view, bool);
+template double Section::require<double>(std::string_view);
+template int Section::require<int>(std::string_view);
+template long Section::require<long>(std::string_view);
+template std::string Section::require<std::string>(std::string_view);
+template double Section::require<double>(std::string_view, Bounds);
 
 namespace {
 std::string join(const std::vector<std::string>& v) {
@@ -245,102 +314,128 @@ std::string join(const std::vector<std::string>& v) {
 }
 }  // namespace
 
-std::string Section::choice(std::string_view key, std::string fallback,
-                            const std::vector<std::string>& options, std::string_view doc) {
-  declare(key);
+std::string Section::read_choice(std::string_view key, const KeySchema& k) {
   const YAML::Node n = child(key);
-  if (!n) {
-    record(key, fallback, true, doc, json_string(fallback));
-    return fallback;
-  }
   auto v = convert<std::string>(key, n, {});
-  if (std::find(options.begin(), options.end(), v) == options.end()) {
-    std::string hint = did_you_mean(v, options);
-    fail(key, "expected one of {" + join(options) + "}, got '" + v + "'" +
+  if (std::find(k.values.begin(), k.values.end(), v) == k.values.end()) {
+    std::string hint = did_you_mean(v, k.values);
+    fail(key, "expected one of {" + join(k.values) + "}, got '" + v + "'" +
                   (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
   }
-  record(key, v, false, doc, json_string(v));
+  record(key, v, false, k.meaning, json_string(v));
   return v;
 }
 
-std::string Section::require_choice(std::string_view key, const std::vector<std::string>& options,
-                                    std::string_view doc) {
-  if (!has(key)) fail_missing(key, "(one of {" + join(options) + "})");
-  return choice(key, "", options, doc);
+std::string Section::choice(std::string_view key) {
+  const KeySchema& k = spec(key, "choice");
+  expect_need(key_path(key), k, false);
+  if (!has(key)) {
+    const std::string fallback = std::get<std::string>(k.fallback);
+    record(key, fallback, true, k.meaning, json_string(fallback));
+    return fallback;
+  }
+  return read_choice(key, k);
 }
 
-std::vector<double> Section::numbers(std::string_view key, std::string_view doc, Bounds b) {
-  declare(key);
+std::string Section::choice(std::string_view key, std::string fallback) {
+  const KeySchema& k = spec(key, "choice");
+  expect_need(key_path(key), k, true);
+  if (!has(key)) {
+    record(key, fallback, true, k.meaning, json_string(fallback));
+    return fallback;
+  }
+  return read_choice(key, k);
+}
+
+std::string Section::require_choice(std::string_view key) {
+  const KeySchema& k = spec(key, "choice");
+  if (!has(key)) fail_missing(key, "(one of {" + join(k.values) + "})");
+  return read_choice(key, k);
+}
+
+std::vector<double> Section::numbers(std::string_view key) {
+  const KeySchema& k = spec(key, "numbers");
   const YAML::Node n = child(key);
-  if (!n) fail_missing(key, "(" + std::string(doc) + ")");
+  if (!n) fail_missing(key, "(" + k.meaning + ")");
   std::vector<double> out;
   if (n.IsScalar()) {
-    out.push_back(convert<double>(key, n, b));
+    out.push_back(convert<double>(key, n, k.bounds));
   } else if (n.IsSequence()) {
-    for (const auto& e : n) out.push_back(convert<double>(key, e, b));
+    for (const auto& e : n) out.push_back(convert<double>(key, e, k.bounds));
   } else {
     fail(key, "expected a list of numbers");
   }
   std::string txt = "[";
   for (size_t i = 0; i < out.size(); ++i) txt += (i ? ", " : "") + to_text(out[i]);
-  record(key, txt + "]", false, doc, json_list(out));
+  record(key, txt + "]", false, k.meaning, json_list(out));
   return out;
 }
 
-std::array<double, 3> Section::require_vec3(std::string_view key, std::string_view doc, Bounds b) {
-  declare(key);
+std::array<double, 3> Section::read_vec3(std::string_view key, const KeySchema& k) {
   const YAML::Node n = child(key);
-  if (!n) fail_missing(key, "(" + std::string(doc) + ")");
+  if (!n) fail_missing(key, "(" + k.meaning + ")");
   if (!n.IsSequence() || n.size() != 3) fail(key, "expected a list of 3 numbers, e.g. [0, 0, 1]");
   std::array<double, 3> v{};
-  for (int i = 0; i < 3; ++i) v[i] = convert<double>(key, n[i], b);
-  record(key, "[" + to_text(v[0]) + ", " + to_text(v[1]) + ", " + to_text(v[2]) + "]", false, doc,
-         json_list(v));
+  for (int i = 0; i < 3; ++i) v[i] = convert<double>(key, n[i], k.bounds);
+  record(key, "[" + to_text(v[0]) + ", " + to_text(v[1]) + ", " + to_text(v[2]) + "]", false,
+         k.meaning, json_list(v));
   return v;
 }
 
-std::array<double, 3> Section::vec3(std::string_view key, std::array<double, 3> fallback,
-                                    std::string_view doc, Bounds b) {
+std::array<double, 3> Section::require_vec3(std::string_view key) {
+  return read_vec3(key, spec(key, "vec3"));
+}
+
+std::array<double, 3> Section::vec3(std::string_view key) {
+  const KeySchema& k = spec(key, "vec3");
+  expect_need(key_path(key), k, false);
   if (!has(key)) {
-    declare(key);
+    const auto& d = std::get<std::vector<double>>(k.fallback);
+    const std::array<double, 3> fallback{d[0], d[1], d[2]};
     record(key,
            "[" + to_text(fallback[0]) + ", " + to_text(fallback[1]) + ", " + to_text(fallback[2]) +
                "]",
-           true, doc, json_list(fallback));
+           true, k.meaning, json_list(fallback));
     return fallback;
   }
-  return require_vec3(key, doc, b);
+  return read_vec3(key, k);
 }
 
-Section Section::section(std::string_view key, std::string_view doc) {
-  auto s = optional_section(key, doc);
-  if (!s)
-    fail("", "missing required section '" + std::string(key) + "' (" + std::string(doc) + ")");
+Section Section::child_section(std::string_view key, const KeySchema& k, YAML::Node n) const {
+  return Section(std::move(n), source_, key_path(key), *k.mapping);
+}
+
+Section Section::section(std::string_view key) {
+  auto s = optional_section(key);
+  if (!s) {
+    const KeySchema& k = spec(key, "section");
+    fail("", "missing required section '" + std::string(key) + "' (" + k.meaning + ")");
+  }
   return *s;
 }
 
-std::optional<Section> Section::optional_section(std::string_view key, std::string_view doc) {
-  declare(key);
+std::optional<Section> Section::optional_section(std::string_view key) {
+  const KeySchema& k = spec(key, "section");
   const YAML::Node n = child(key);
   if (!n) return std::nullopt;
-  if (!n.IsMap()) fail(key, "expected a mapping (" + std::string(doc) + ")");
-  return Section(n, source_, key_path(key));
+  if (!n.IsMap()) fail(key, "expected a mapping (" + k.meaning + ")");
+  return child_section(key, k, n);
 }
 
-Section Section::section_or_defaults(std::string_view key, std::string_view doc) {
-  if (auto s = optional_section(key, doc)) return *s;
-  return Section(YAML::Node(YAML::NodeType::Map), source_, key_path(key));
+Section Section::section_or_defaults(std::string_view key) {
+  if (auto s = optional_section(key)) return *s;
+  return child_section(key, spec(key, "section"), YAML::Node(YAML::NodeType::Map));
 }
 
-std::vector<Section> Section::list(std::string_view key, std::string_view doc) {
-  declare(key);
+std::vector<Section> Section::list(std::string_view key) {
+  const KeySchema& k = spec(key, "list");
   std::vector<Section> out;
   const YAML::Node n = child(key);
   if (!n) return out;
-  if (!n.IsSequence()) fail(key, "expected a list (" + std::string(doc) + ")");
+  if (!n.IsSequence()) fail(key, "expected a list (" + k.meaning + ")");
   for (size_t i = 0; i < n.size(); ++i) {
     if (!n[i].IsMap()) fail(key, "entry " + std::to_string(i) + ": expected a mapping");
-    out.emplace_back(n[i], source_, key_path(key) + "[" + std::to_string(i) + "]");
+    out.emplace_back(n[i], source_, key_path(key) + "[" + std::to_string(i) + "]", *k.mapping);
   }
   return out;
 }
@@ -362,6 +457,14 @@ void Section::finish() const {
   for (const auto& kv : node_) {
     const auto key = kv.first.as<std::string>();
     if (declared_.count(key)) continue;
+    // A key the schema allows here but the reader left unread would be refused as unknown while
+    // --schema and the JSON Schema accept it: a bug of the reader, not of the scene.
+    auto in = [&](const std::vector<KeySchema>& ks) {
+      return std::any_of(ks.begin(), ks.end(), [&](const KeySchema& k) { return k.name == key; });
+    };
+    if (in(schema_->keys) || (alternative_ && in(alternative_->keys)))
+      throw std::logic_error("scene schema: '" + key_path(key) +
+                             "' is declared in the schema but its reader did not read it");
     std::string hint = did_you_mean(key, known);
     std::string loc = source_->file;
     if (!kv.first.Mark().is_null()) loc += ":" + std::to_string(kv.first.Mark().line + 1);

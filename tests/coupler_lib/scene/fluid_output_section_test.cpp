@@ -11,7 +11,7 @@ const std::array<int, 3> kCells{10, 20, 30};
 
 FluidOutputParams parse(const std::string& fluid_yaml) {
   Section root = Section::load_string("fluid:\n" + fluid_yaml, "o.yaml");
-  Section fluid = root.section("fluid", "fluid");
+  Section fluid = root.section("fluid");
   FluidOutputParams p = parse_fluid_output(fluid, kUnits, kCells);
   fluid.finish();
   return p;
