@@ -23,10 +23,10 @@ class Judge(unittest.TestCase):
                 self.assertIn(name, stability.BOUNDS, name)
 
     def test_within_the_bound_passes(self):
-        self.assertEqual(stability.judge(row("tau_0p51", "runs", 0.36)), (True, ""))
+        self.assertEqual(stability.judge(row("tau_0p51", "runs", 0.19)), (True, ""))
 
     def test_above_the_bound_fails(self):
-        ok, why = stability.judge(row("tau_0p51", "runs", 0.8))
+        ok, why = stability.judge(row("tau_0p51", "runs", 0.5))
         self.assertFalse(ok)
         self.assertIn("above its bound", why)
 
