@@ -30,7 +30,7 @@ import shlex
 import subprocess
 import sys
 
-HEADER = re.compile(r"^\d+/\d+ Test: (\S+)", re.M)
+HEADER = re.compile(r"^\d+/\d+ Test: (.+?)\s*$", re.M)
 STATUS = re.compile(r"^Test (Passed|Failed|Skipped|Not Run)", re.M)
 COMMAND = re.compile(r"^Command: (.*)$", re.M)
 GENERIC = re.compile(r"^\[validation\] (?P<case>.+?): (?P<ref>.*?) error (?P<err>\S+), "
@@ -180,6 +180,11 @@ def log_sections(path):
     return out
 
 
+def shown(test):
+    """A parametrized gtest's CTest name without its '# GetParam() = <bytes>' comment."""
+    return test.split("  # GetParam()")[0]
+
+
 def table_rows(tests, entries, sections):
     rows, flagged = [], []
     for test in sorted(tests):
@@ -189,14 +194,14 @@ def table_rows(tests, entries, sections):
         lines = rows_of(test, body) if body else []
         if not lines:
             what = "no error line printed" if body else "not in this run"
-            rows.append((test, kind, e[2] if e else "", "", what, "", wall, status, ""))
+            rows.append((shown(test), kind, e[2] if e else "", "", what, "", wall, status, ""))
             continue
         for ref, tol, err in lines:
             t, m = number(tol), number(err)
             ratio, flag = "", ""
             if t is not None and m is not None and m != 0:
                 r = t / abs(m)
-                ratio = f"{r:.2f}"
+                ratio = f"{r:.3g}"
                 if kind == "known_off":
                     flag = "known off"
                 elif r < 1.3:
@@ -204,13 +209,14 @@ def table_rows(tests, entries, sections):
                     flagged.append(test)
             elif kind == "known_off":
                 flag = "known off"
-            rows.append((test, kind, ref, tol, err, ratio, wall, status, flag))
+            rows.append((shown(test), kind, ref, tol, err, ratio, wall, status, flag))
     return rows, flagged
 
 
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
-    p.add_argument("log", nargs="?", help="build/Testing/Temporary/LastTest.log")
+    p.add_argument("log", nargs="*", help="build/Testing/Temporary/LastTest.log (several: a "
+                   "later log's run of a test replaces an earlier one's, e.g. a rerun)")
     p.add_argument("--build", default="build", help="the build whose validation tests to list")
     p.add_argument("--kinds", default=KINDS_FILE)
     p.add_argument("--out", default="docs/validation-table.md")
@@ -235,7 +241,10 @@ def main():
         p.error("the log is required (or --check-kinds)")
     for pr in problems:
         print(f"warning: {pr}", file=sys.stderr)
-    rows, flagged = table_rows(tests, entries, log_sections(a.log))
+    sections = {}
+    for path in a.log:
+        sections.update(log_sections(path))
+    rows, flagged = table_rows(tests, entries, sections)
     lines = [
         "# Validation table",
         "",
@@ -276,7 +285,7 @@ def main():
     with open(a.out, "w", encoding="utf-8") as f:
         f.write("\n".join(lines) + "\n")
     print(f"{a.out}: {len(rows)} rows from {len(tests)} validation tests; flagged "
-          f"(tolerance < 1.3x measured): {', '.join(sorted(set(flagged))) or 'none'}")
+          f"(tolerance < 1.3x measured): {', '.join(sorted({shown(t) for t in flagged})) or 'none'}")
     return 0
 
 
