@@ -390,7 +390,8 @@ def main():
             q.add_argument("--known-off", type=band_arg, default=None, metavar="LOW:HIGH",
                            help="the case is known to be off: pass only while the signed "
                                 "relative error (%%) lies outside --tolerance and inside "
-                                "[LOW, HIGH] %%, e.g. -4.0:-3.0")
+                                "[LOW, HIGH] %%; write --known-off=-4.0:-3.0 (a value "
+                                "starting with - needs the =)")
         if name in ("terminal", "drag", "spin"):
             q.add_argument("--window", type=float, default=0.2,
                            help="fraction of the run at its end to average over")
