@@ -228,15 +228,18 @@ def main():
     tests = validation_tests(a.build)
     problems = check_kinds(tests, entries)
     if a.check_kinds:
+        # A test without a kind fails; a line matching no test is only reported (a build
+        # without LAMMPS or an unbuilt gtest target registers fewer tests).
+        missing = [pr for pr in problems if "no reference kind" in pr]
         for pr in problems:
-            print(pr)
+            print(pr if pr in missing else f"note: {pr}")
         counts = {}
         for t in tests:
             k = kind_of(t, entries)
             counts[k[1] if k else "MISSING"] = counts.get(k[1] if k else "MISSING", 0) + 1
         print(f"{len(tests)} validation tests: " +
               ", ".join(f"{k} {n}" for k, n in sorted(counts.items())))
-        return 1 if problems else 0
+        return 1 if missing else 0
     if not a.log:
         p.error("the log is required (or --check-kinds)")
     for pr in problems:
