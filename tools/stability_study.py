@@ -7,7 +7,9 @@
     tools/stability_study.py --build build --only tau_0p505 density_0p1
 
 Prints one line per case and a Markdown table (also written to <out>/stability.md). Exit 1
-when a case ends otherwise than expected, or as nan, crash or hang.
+when a case ends otherwise than expected, or as nan, crash or hang, when its computed error is
+above its bound (stability.BOUNDS), or when a refusal or diagnosis does not name its cause
+(stability.MESSAGES).
 """
 import argparse
 import os
@@ -38,11 +40,14 @@ def main():
     rows, ok = [], True
     for name in names:
         r = stability.study_case(args.build, name, args.timeout, args.out)
-        good = r["outcome"] == r["expected"]
+        good, why = stability.judge(r)
         ok = ok and good
         err = r["what"] if r["error"] is None else f"{r['error']:.3g} ({r['what']})"
-        print(f"{name}: {r['outcome']} (expected {r['expected']}){'' if good else ' MISMATCH'}; "
-              f"wall {r['wall_s']:.1f} s; {err} {r['message']}", flush=True)
+        bound = stability.BOUNDS.get(name)
+        if bound is not None:
+            err += f", bound {bound:g}"
+        print(f"{name}: {r['outcome']} (expected {r['expected']}){'' if good else ' FAILED: ' + why}"
+              f"; wall {r['wall_s']:.1f} s; {err} {r['message']}", flush=True)
         rows.append(r)
     md = ["| case | ranks | outcome | error | wall (s) | message |", "|---|---|---|---|---|---|"]
     for r in rows:

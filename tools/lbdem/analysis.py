@@ -130,6 +130,45 @@ def curve_difference(t, u, t_ref, u_ref, max_shift=0.1, shift_steps=81):
             "t_largest": float(tr[k]), "shift": best, "rms_shifted": rms[best]}
 
 
+def smoothed_peak(t, u, period):
+    """The largest value of u(t) after a centred moving average over one `period` (seconds).
+
+    A body's speed ripples at its lattice-crossing frequency (the nearest-voxel lookup changes
+    the covered cells each time it moves by one cell dx, period dx / u); the raw maximum takes
+    the crest of that ripple, not the speed. Each sample is replaced by the mean of the samples
+    within +- period / 2 of it (the window is cut at the ends of the run, where fewer samples
+    enter). Returns (index, t at the peak, smoothed peak, smoothed series, samples per window);
+    with fewer than two samples per period the series is returned as it is."""
+    t, u = np.asarray(t, float), np.asarray(u, float)
+    if len(t) == 0:
+        raise ValueError("smoothed_peak: empty series")
+    half = 0.5 * period
+    lo = np.searchsorted(t, t - half, side="left")
+    hi = np.searchsorted(t, t + half, side="right")
+    counts = hi - lo
+    if not np.isfinite(period) or period <= 0 or np.median(counts) < 2:
+        smooth, n = u.copy(), 1
+    else:
+        c = np.concatenate(([0.0], np.cumsum(u)))
+        smooth, n = (c[hi] - c[lo]) / counts, int(np.median(counts))
+    k = int(np.argmax(smooth))
+    return k, float(t[k]), float(smooth[k]), smooth, n
+
+
+def judge_known_off(signed_error, tolerance, band):
+    """A case known to be off: passes only while its signed relative error stays outside the
+    tolerance and inside the band (low, high) it was recorded in. Returns (ok, verdict)."""
+    low, high = band
+    if abs(signed_error) <= tolerance:
+        return False, (f"now within the tolerance {100 * tolerance:.2f} %: the case is no longer "
+                       "off, remove its known-off mark and give it a tolerance")
+    if not low <= signed_error <= high:
+        return False, (f"outside its recorded band [{100 * low:+.2f}, {100 * high:+.2f}] %: the "
+                       "case changed, explain the new number before recording it")
+    return True, (f"known off: {100 * signed_error:+.2f} % (tolerance {100 * tolerance:.2f} %, "
+                  f"recorded band [{100 * low:+.2f}, {100 * high:+.2f}] %)")
+
+
 def radial_distribution(positions, box, r_max=None, bins=50):
     """g(r) as in the paper: <N_pairs(r, r + dr)> / (N (N - 1) / 2 * shell volume / V), averaged
     over configurations, periodic minimum image (r_max <= L_min / 2). The exact shell volume

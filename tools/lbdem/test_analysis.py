@@ -217,5 +217,56 @@ class CurveDifference(unittest.TestCase):
         self.assertEqual(d["n"], int(np.sum(self.t_ref <= 1.0)))
         self.assertLess(d["rms"], 1e-6)
 
+
+class SmoothedPeak(unittest.TestCase):
+    """The peak of a speed that rippled at its lattice-crossing frequency."""
+
+    def setUp(self):
+        self.t = np.linspace(0.0, 3.0, 301)                      # 0.01 s samples
+        self.base = 0.036 * np.exp(-(((self.t - 1.5) / 1.0) ** 2))  # a smooth hump, peak 0.036
+
+    def test_the_ripple_crest_is_averaged_out(self):
+        period = 0.07
+        u = self.base + 0.0005 * np.sin(2 * np.pi * self.t / period + 0.3)
+        self.assertGreater(u.max(), 0.036 + 0.0003)             # the raw maximum: the crest
+        k, t_peak, peak, smooth, n = analysis.smoothed_peak(self.t, u, period)
+        self.assertEqual(n, 7)
+        self.assertAlmostEqual(peak, 0.036, delta=0.036 * 2e-3)
+        self.assertAlmostEqual(t_peak, 1.5, delta=0.05)
+        self.assertEqual(len(smooth), len(u))
+
+    def test_a_smooth_series_keeps_its_peak(self):
+        k, t_peak, peak, _, _ = analysis.smoothed_peak(self.t, self.base, 0.07)
+        self.assertAlmostEqual(peak, 0.036, delta=0.036 * 5e-4)
+        self.assertAlmostEqual(t_peak, 1.5, places=6)
+
+    def test_a_period_below_two_samples_leaves_the_series(self):
+        u = self.base + 0.0005 * np.sin(2 * np.pi * self.t / 0.005)
+        k, _, peak, smooth, n = analysis.smoothed_peak(self.t, u, 0.005)
+        self.assertEqual(n, 1)
+        self.assertEqual(peak, u.max())
+        self.assertTrue(np.array_equal(smooth, u))
+
+
+class KnownOff(unittest.TestCase):
+    """A known-off case passes only while it stays off, inside its recorded band."""
+
+    def test_off_inside_the_band_passes(self):
+        ok, verdict = analysis.judge_known_off(-0.0336, 0.03, (-0.040, -0.030))
+        self.assertTrue(ok)
+        self.assertIn("known off: -3.36 %", verdict)
+
+    def test_within_the_tolerance_fails(self):
+        ok, verdict = analysis.judge_known_off(-0.029, 0.03, (-0.040, -0.025))
+        self.assertFalse(ok)
+        self.assertIn("no longer off", verdict)
+
+    def test_outside_the_band_fails(self):
+        for e in (-0.05, 0.035):
+            ok, verdict = analysis.judge_known_off(e, 0.03, (-0.040, -0.030))
+            self.assertFalse(ok)
+            self.assertIn("outside its recorded band", verdict)
+
+
 if __name__ == "__main__":
     unittest.main()
