@@ -143,8 +143,7 @@ inline double ReferencePorosity::nearest(const Eigen::Vector3d& ref,
   const std::size_t sy = static_cast<std::size_t>(m_[0]);
   const std::size_t sz = sy * static_cast<std::size_t>(m_[1]);
   {
-    const double x = ref.x() + kNearestHalf, y = ref.y() + kNearestHalf,
-                 z = ref.z() + kNearestHalf;
+    const double x = ref.x() + kNearestHalf, y = ref.y() + kNearestHalf, z = ref.z() + kNearestHalf;
     // Outside the padded lattice every point falls outside it or in its two fluid layers.
     if (!(x >= 0 && y >= 0 && z >= 0 && x < m_[0] && y < m_[1] && z < m_[2])) return 1.0;
     const Block b = block_[static_cast<std::size_t>(x) + sy * static_cast<std::size_t>(y) +

@@ -46,10 +46,10 @@ constexpr double kBox = 1.6e-3, kNu = 1e-6, kRho = 1000;
 // array of spheres.
 double sangani_acrivos_k(double phi) {
   static constexpr std::array<double, 31> alpha = {
-      1.000000,   1.418649,   2.012564, 2.331523,  2.564809,   2.584787,  2.873609, 3.340163,
-      3.536763,   3.504092,   3.253622, 2.689757,  2.037769,   1.809341,  1.877347, 1.534685,
-      0.9034708,  0.2857896,  -0.5512626, -1.278724, 1.013350, 5.492491,  4.615388, -0.5736023,
-      -2.865924, -4.709215, -6.870076, 0.1455304, 12.51891,   9.742811,  -5.566269};
+      1.000000,  1.418649,  2.012564,   2.331523,  2.564809, 2.584787, 2.873609, 3.340163,
+      3.536763,  3.504092,  3.253622,   2.689757,  2.037769, 1.809341, 1.877347, 1.534685,
+      0.9034708, 0.2857896, -0.5512626, -1.278724, 1.013350, 5.492491, 4.615388, -0.5736023,
+      -2.865924, -4.709215, -6.870076,  0.1455304, 12.51891, 9.742811, -5.566269};
   const double chi = std::cbrt(phi / (std::numbers::pi / 6));
   double k = 0, power = 1;
   for (const double a : alpha) {
@@ -64,8 +64,8 @@ enum class Load { drag, spin };
 struct Case {
   std::string kind;  // sphere | cube
   Load load = Load::drag;
-  int n = 16;         // box edge, cells
-  double size = 8;    // diameter or edge, cells
+  int n = 16;       // box edge, cells
+  double size = 8;  // diameter or edge, cells
   double tau = 0.8;
   double reference = 0;  // K (drag) or T / (8 pi mu a^3 Omega) (spin); 0: none (spread only)
   double tolerance = 0;  // of the mean against the reference
@@ -144,9 +144,8 @@ Result steady_load(const Case& c, const Shape& shape, const Pose& pose) {
   Eigen::Vector3d omega = Eigen::Vector3d::Zero();
   if (c.load == Load::spin) omega = Eigen::Vector3d(0.3, -0.4, 0.866).normalized() * (1e-4 / a);
   s.set_uniform_force({0, 0, g});
-  const BodyState st =
-      test::state(0, Eigen::Vector3d::Constant(kBox / 2) + pose.offset * p.dx, pose.q,
-                  Eigen::Vector3d::Zero(), omega / p.units.dt);
+  const BodyState st = test::state(0, Eigen::Vector3d::Constant(kBox / 2) + pose.offset * p.dx,
+                                   pose.q, Eigen::Vector3d::Zero(), omega / p.units.dt);
   bodies.update({&st, 1});
   std::vector<double> rho, u;
   const int check = std::max(20, n * n / 16);
@@ -169,7 +168,8 @@ Result steady_load(const Case& c, const Shape& shape, const Pose& pose) {
       double sum = 0;
       for (std::size_t i = 2; i < u.size(); i += 3) sum += u[i];
       now = sum / cells;
-      steady = std::abs(now - last) < 1e-5 * std::abs(now) && std::abs(f.z() / (g * cells) - 1) < 1e-4;
+      steady =
+          std::abs(now - last) < 1e-5 * std::abs(now) && std::abs(f.z() / (g * cells) - 1) < 1e-4;
       r.value = f.z() / (6 * std::numbers::pi * nu * a * now);
       r.arm = t.norm() / std::abs(f.z());
     } else {
@@ -199,8 +199,9 @@ void check_case(const Case& c) {
   for (const Pose& p : poses()) {
     const Result r = steady_load(c, shape, p);
     values.push_back(r.value);
-    std::printf("  offset (%.3f, %.3f, %.3f) q (%+.3f, %+.3f, %+.3f, %+.3f): %s = %.5f", p.offset.x(),
-                p.offset.y(), p.offset.z(), p.q.w(), p.q.x(), p.q.y(), p.q.z(), what, r.value);
+    std::printf("  offset (%.3f, %.3f, %.3f) q (%+.3f, %+.3f, %+.3f, %+.3f): %s = %.5f",
+                p.offset.x(), p.offset.y(), p.offset.z(), p.q.w(), p.q.x(), p.q.y(), p.q.z(), what,
+                r.value);
     if (c.reference > 0) std::printf(" (%+.2f %%)", 100 * (r.value / c.reference - 1));
     if (c.load == Load::drag) std::printf(", lever arm %.3f cells", r.arm);
     std::printf(", %d steps\n", r.steps);
@@ -301,9 +302,9 @@ TEST(PoseInvariance, Measure) {
   if (env == nullptr) GTEST_SKIP() << "set POSE_CASE to measure a case";
   char kind[16], load[16];
   Case c;
-  ASSERT_EQ(std::sscanf(env, "%15s %15s %d %lf %lf %lf", kind, load, &c.n, &c.size, &c.tau,
-                        &c.reference),
-            6);
+  ASSERT_EQ(
+      std::sscanf(env, "%15s %15s %d %lf %lf %lf", kind, load, &c.n, &c.size, &c.tau, &c.reference),
+      6);
   c.kind = kind;
   c.load = std::string(load) == "spin" ? Load::spin : Load::drag;
   c.tolerance = 1.0;
