@@ -253,7 +253,8 @@ Case sphere_in_array(Load load, int n, double phi, double tau) {
 
 // Dilute array, d = 11.5 cells (phi 0.1, tau 1): centred between nodes its 28 voxels put every
 // stencil point on a voxel face, and before the tie tolerance the round-off split the ties
-// (K -7 % there). Measured 2 Dec 2026: mean -1.76 %, spread 1.41 %; tolerance 3 % (1.7x).
+// (K -19.5 % there). Measured (docs/validation.md section 7): mean -1.76 %, spread 1.41 %;
+// tolerance 3 % (1.7x).
 TEST(PoseInvariance, SphereDragDiluteD12Tau1) {
   Case c = sphere_in_array(Load::drag, 20, 0.1, 1.0);
   c.tolerance = 0.03;
@@ -280,8 +281,8 @@ TEST(PoseInvariance, SphereDragDenseD28Phi0343) {
 
 // Spinning sphere (the torque path), d = 8 cells in a box of 4 d as coupled_sphere_spin:
 // T against Stokes' 8 pi mu a^3 Omega, tolerance 5 % (that test's). KNOWN TO FAIL the spread
-// (ctest WILL_FAIL): measured 2 Dec 2026, mean +1.64 %, spread 2.94 %: the four unrotated poses
-// read +0.20 %, the rotated ones +1.65 to +3.19 % (the nearest lookup's stencil aligned with
+// (ctest WILL_FAIL; docs/validation.md section 7): mean +1.65 %, spread 2.94 %: the four unrotated
+// poses read +0.20 %, the rotated ones +1.65 to +3.19 % (the nearest lookup's stencil aligned with
 // the voxel lattice; docs/validation.md section 7).
 TEST(PoseInvariance, SphereSpinD8) {
   Case c = sphere_in_array(Load::spin, 32, 0.0082, 0.8);
@@ -292,9 +293,9 @@ TEST(PoseInvariance, SphereSpinD8) {
 }
 
 // Cube of edge 8 cells in a box of 24 (phi 0.037, tau 1): no published drag for a cubic array
-// of cubes, so the spread alone is asserted. KNOWN TO FAIL (ctest WILL_FAIL): measured 2 Dec
-// 2026, spread 5.3 %: unrotated, K moves by 3.7 % with the sub-cell offset (faces on node planes
-// or between them), the rotated poses by 2.0 % (docs/validation.md section 7).
+// of cubes, so the spread alone is asserted. KNOWN TO FAIL (ctest WILL_FAIL; docs/validation.md
+// section 7), spread 5.3 %: unrotated, K moves by 3.7 % with the sub-cell offset (faces on node
+// planes or between them), the rotated poses by 2.0 % (docs/validation.md section 7).
 TEST(PoseInvariance, CubeDragDiluteD8) {
   Case c;
   c.kind = "cube";
