@@ -9,6 +9,7 @@
 
 #include "coupler_lib/app/progress.hpp"
 #include "coupler_lib/coupling/schedule.hpp"
+#include "coupler_lib/geometry/display_surface.hpp"
 #include "coupler_lib/scene/shape_catalogue.hpp"
 #include "dem_app/body_output.hpp"
 #include "dem_app/contact_model.hpp"
@@ -62,6 +63,8 @@ int run_dem_only(AppContext& ctx) {
   validate_dem_setup(setup);
   if (ctx.rank == 0) ctx.log->info("DEM: {}", describe_engine_inputs(setup));
 
+  std::vector<TriangleMesh> surfaces;
+  if (out.surfaces) surfaces = display_surfaces(scene.shapes, setup.shapes);
   LammpsEngine engine(ctx.side_comm, std::move(setup));
   const double dt = engine.dt();
   const auto total = static_cast<long>(step_count(scene.time.end, dt));
@@ -74,7 +77,8 @@ int run_dem_only(AppContext& ctx) {
   std::unique_ptr<BodySnapshotWriter> snapshots;
   std::unique_ptr<EnergySeries> energy;
   if (snap_every > 0)
-    snapshots = std::make_unique<BodySnapshotWriter>(dir.string(), scene.name, ctx.side_comm);
+    snapshots = std::make_unique<BodySnapshotWriter>(dir.string(), scene.name, ctx.side_comm,
+                                                     std::move(surfaces));
   if (energy_every > 0)
     energy = std::make_unique<EnergySeries>((dir / (scene.name + "_energy.csv")).string(),
                                             ctx.side_comm);
@@ -105,7 +109,9 @@ int run_dem_only(AppContext& ctx) {
   if (ctx.rank == 0) {
     ctx.log->info("DEM run finished: {} steps, t = {} s", step, engine.time());
     if (snapshots)
-      ctx.log->info("bodies: {} ({} snapshots)", snapshots->xdmf_path(), snapshots->snapshots());
+      ctx.log->info(
+          "bodies: {} ({} snapshots){}", snapshots->xdmf_path(), snapshots->snapshots(),
+          snapshots->surfaces_path().empty() ? "" : ", surfaces: " + snapshots->surfaces_path());
     if (energy) ctx.log->info("energy: {}", energy->path());
   }
   return 0;

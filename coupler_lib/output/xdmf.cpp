@@ -36,6 +36,15 @@ void mesh(std::ostringstream& x, const XdmfPoints& m) {
   x << "      </Geometry>\n";
 }
 
+void mesh(std::ostringstream& x, const XdmfTriangles& m) {
+  x << "      <Topology TopologyType=\"Triangle\" NumberOfElements=\"" << m.triangles << "\">\n";
+  data_item(x, m.connectivity, "        ");
+  x << "      </Topology>\n"
+    << "      <Geometry GeometryType=\"XYZ\">\n";
+  data_item(x, m.positions, "        ");
+  x << "      </Geometry>\n";
+}
+
 }  // namespace
 
 std::string xdmf_series(const std::string& name, const std::vector<XdmfGrid>& grids) {

@@ -1,9 +1,9 @@
 #pragma once
 // The one XDMF (version 3) writer of both programs: a temporal collection of uniform grids whose
 // arrays live in HDF5 files, which ParaView opens with its XDMF readers. The fluid fields are
-// lattices (3DCoRectMesh, origin and spacing inline); the bodies are points (Polyvertex). The
-// text is rewritten whole after each output step through write_file_atomically, so a reader
-// never sees a half-written file.
+// lattices (3DCoRectMesh, origin and spacing inline); the bodies are points (Polyvertex) and
+// their surfaces triangles. The text is rewritten whole after each output step through
+// write_file_atomically, so a reader never sees a half-written file.
 #include <array>
 #include <string>
 #include <variant>
@@ -38,10 +38,19 @@ struct XdmfPoints {
   XdmfArray positions;
 };
 
+// A triangle surface: point coordinates (n x 3) and connectivity (triangles x 3, 0-based indices
+// into the points).
+struct XdmfTriangles {
+  long points = 0;
+  XdmfArray positions;
+  long triangles = 0;
+  XdmfArray connectivity;
+};
+
 struct XdmfGrid {
   std::string name;
   double time = 0;
-  std::variant<XdmfLattice, XdmfPoints> mesh;
+  std::variant<XdmfLattice, XdmfPoints, XdmfTriangles> mesh;
   std::vector<XdmfAttribute> attributes;  // all node-centred
 };
 

@@ -14,7 +14,8 @@ struct Point {
 
 // tools/calibrate_band.py --cells 8 (sphere d = 8 dx in a periodic box of 3 d, phi 0.019,
 // Re 0.01), mean of the sphere centred on a node and off it by (0.31, 0.17, 0.43) dx; the two
-// differ by 0.03-0.06 cells. Runs of 1 Dec 2026 (docs/validation.md, section 6).
+// differ by 0.03-0.06 cells. Measured values and how to rerun them: docs/validation.md,
+// section 6 "The calibrated hydrodynamic radius".
 constexpr std::array<Point, 17> kNearest{{{0.505, 0.843},
                                           {0.51, 0.750},
                                           {0.52, 0.653},

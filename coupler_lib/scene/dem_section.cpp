@@ -119,6 +119,10 @@ DemParams parse_dem(Section& s) {
     p.output.energy_interval = o.get<double>(
         "energy_interval", 0.0, "simulated seconds between energy rows (0: same as interval)",
         Bounds::non_negative());
+    p.output.surfaces = o.get<bool>(
+        "surfaces", true,
+        "body snapshots also carry each body's surface (<name>_surfaces.xdmf: ParaView shows the "
+        "shapes, not points)");
     p.output.directory =
         o.get<std::string>("directory", ".", "output directory (relative to the scene)");
     // Kept as written: the programs resolve it against the scene file's folder where they use it.

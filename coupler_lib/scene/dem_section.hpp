@@ -30,6 +30,7 @@ struct DemWall {
 struct DemOutput {
   double interval = 0;         // s of simulated time between body snapshots; 0 = none
   double energy_interval = 0;  // s between CSV energy rows; 0 = same as `interval`
+  bool surfaces = true;        // snapshots carry the body surfaces (body_output.hpp)
   std::string directory = ".";
 };
 

@@ -9,6 +9,7 @@
 #include "coupler_lib/coupling/coupling_session.hpp"
 #include "coupler_lib/coupling/dem_coupler.hpp"
 #include "coupler_lib/coupling/world.hpp"
+#include "coupler_lib/geometry/display_surface.hpp"
 #include "coupler_lib/scene/scene_fingerprint.hpp"
 #include "coupler_lib/scene/shape_catalogue.hpp"
 #include "dem_app/body_output.hpp"
@@ -91,7 +92,10 @@ int run_coupled_dem(AppContext& ctx) {
   std::unique_ptr<BodySnapshotWriter> snapshots;
   std::unique_ptr<BodyTrace> trace;
   if (schedule.output_interval > 0) {
-    snapshots = std::make_unique<BodySnapshotWriter>(dir.string(), scene.name, ctx.side_comm);
+    snapshots = std::make_unique<BodySnapshotWriter>(
+        dir.string(), scene.name, ctx.side_comm,
+        setup.params.output.surfaces ? display_surfaces(scene.shapes, setup.shapes)
+                                     : std::vector<TriangleMesh>{});
     trace = std::make_unique<BodyTrace>((dir / (scene.name + "_bodies.csv")).string(),
                                         ctx.side_comm, history ? trace_bytes : -1);
   }

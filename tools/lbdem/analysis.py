@@ -64,6 +64,31 @@ def momentum_change(fluid, bodies, applied):
     return total - total[0]
 
 
+def fit_hindered_settling(phi, u, err=None):
+    """Least-squares fit of u = k (1 - phi)^n (u: u/u_T at solid fractions phi), as a straight
+    line ln u = ln k + n ln(1 - phi), weighted by the relative errors err / u when given. Returns
+    {k, n, k_error, n_error, rms_relative_residual}; the errors are the fit's standard errors:
+    from the given errors, scaled up by the residual scatter where that is larger (chi^2 per
+    degree of freedom above 1); without errors from the scatter alone (NaN with two points)."""
+    phi, u = np.asarray(phi, float), np.asarray(u, float)
+    x, y = np.log1p(-phi), np.log(u)
+    w = np.ones_like(x) if err is None else (u / np.maximum(np.asarray(err, float), 1e-12))
+    a = np.vstack([np.ones_like(x), x]).T * w[:, None]
+    coef, *_ = np.linalg.lstsq(a, y * w, rcond=None)
+    resid = y - (coef[0] + coef[1] * x)
+    dof = len(x) - 2
+    if dof > 0 or err is not None:
+        chi2 = float(np.sum((w * resid) ** 2) / dof) if dof > 0 else 0.0
+        s2 = chi2 if err is None else max(1.0, chi2)
+        cov = s2 * np.linalg.inv(a.T @ a)
+        ln_k_err, n_err = float(np.sqrt(cov[0, 0])), float(np.sqrt(cov[1, 1]))
+    else:
+        ln_k_err = n_err = float("nan")
+    k = float(np.exp(coef[0]))
+    return {"k": k, "n": float(coef[1]), "k_error": k * ln_k_err, "n_error": n_err,
+            "rms_relative_residual": float(np.sqrt(np.mean(np.expm1(resid) ** 2)))}
+
+
 def slip_velocity(v_zero_flux, phi):
     """Relative velocity of bodies and fluid, <u_p> - <u_f> = V / (1 - phi), from the settling
     velocity V in the zero-volume-flux frame (j = phi u_p + (1 - phi) u_f = 0)."""

@@ -1,5 +1,6 @@
-"""The study's figures, in the paper's style: u/u_T against phi with Richardson-Zaki and
-Batchelor, g(r), C(r) of delta v_z, and the VACF of v_xy (one PNG each)."""
+"""The study's figures, in the paper's style: u/u_T against phi with Richardson-Zaki, Batchelor,
+Yin & Koch's fit and the study's own fit per shape, g(r), C(r) of delta v_z, and the VACF of v_xy
+(one PNG each)."""
 import os
 
 import matplotlib
@@ -13,7 +14,7 @@ from . import references  # noqa: E402
 MARKERS = {"sphere": ("o", "tab:blue"), "cube": ("s", "tab:red")}
 
 
-def settling_plot(rows, reynolds, path):
+def settling_plot(rows, reynolds, path, fits=None):
     fig, ax = plt.subplots(figsize=(5.5, 4))
     phi = np.linspace(0.0, 0.45, 100)
     ax.plot(phi, references.richardson_zaki(phi, reynolds), "k-",
@@ -21,6 +22,9 @@ def settling_plot(rows, reynolds, path):
                   f"(n = {references.richardson_zaki_exponent(reynolds):.2f})")
     ax.plot(phi[phi < 0.1], references.batchelor(phi[phi < 0.1]), "k--",
             label="Batchelor, 1 - 6.55 phi")
+    k_yk, n_yk = references.yin_koch_fit(reynolds)
+    ax.plot(phi, references.yin_koch(phi, reynolds), "k-.",
+            label=f"Yin & Koch 2007 fit, Re = {reynolds:g} (k = {k_yk:.2f}, n = {n_yk:.2f})")
     for shape in ("sphere", "cube"):
         sel = [r for r in rows if r["shape"] == shape]
         if not sel:
@@ -29,6 +33,10 @@ def settling_plot(rows, reynolds, path):
         ax.errorbar([r["phi"] for r in sel], [r["u_over_uT"] for r in sel],
                     yerr=[r["u_over_uT_error"] for r in sel], fmt=m, color=c, capsize=3,
                     label=f"{shape}s (u_T = {sel[0]['u_T']:.4g} m/s, this code)")
+        if fits and shape in fits:
+            f = fits[shape]
+            ax.plot(phi, f["k"] * (1 - phi) ** f["n"], ":", color=c,
+                    label=f"fit to the {shape}s: k = {f['k']:.2f}, n = {f['n']:.2f}")
     ax.set_xlabel(r"solid fraction $\phi$")
     ax.set_ylabel(r"$\langle u \rangle / u_T$ (zero-volume-flux frame)")
     ax.set_xlim(0, 0.45)
@@ -59,10 +67,10 @@ def per_shape_plot(rows, curves, path, x_key, y_key, xlabel, ylabel, scale, mark
     plt.close(fig)
 
 
-def study_plots(rows, curves, out, reynolds, d, a):
+def study_plots(rows, curves, out, reynolds, d, a, fits=None):
     paths = [os.path.join(out, n) for n in ("settling.png", "rdf.png", "correlation.png",
                                             "vacf.png")]
-    settling_plot(rows, reynolds, paths[0])
+    settling_plot(rows, reynolds, paths[0], fits)
     per_shape_plot(rows, curves, paths[1], "r", "g", r"$r / d$", r"$g(r)$", lambda r: d,
                    marks={"cube": a / d})
     per_shape_plot(rows, curves, paths[2], "rc", "C", r"$r / L$", r"$C(r)$ of $\delta v_z$",

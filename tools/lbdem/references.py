@@ -77,6 +77,31 @@ def richardson_zaki(phi, re, exponent="richardson-zaki"):
     return (1.0 - phi) ** EXPONENTS[exponent](re)
 
 
+# Yin & Koch 2007 (Phys. Fluids 19, 093302), lattice-Boltzmann simulations of random sphere
+# suspensions at finite Reynolds number: their fits U / U_t = k (1 - phi)^n at the single-sphere
+# Reynolds number Re_t.
+_YIN_KOCH = ((1.02, 0.92, 4.2), (1.83, 0.90, 4.1), (5.00, 0.86, 4.0), (9.98, 0.86, 3.8),
+             (20.0, 0.88, 3.6))
+
+
+def yin_koch_fit(re):
+    """(k, n) of Yin & Koch's fit at Re_t, interpolated linearly in log Re between their five
+    Reynolds numbers (1.02-20); outside that range the nearest end."""
+    res = [r for r, _, _ in _YIN_KOCH]
+    x = min(max(math.log(re), math.log(res[0])), math.log(res[-1]))
+    for (r0, k0, n0), (r1, k1, n1) in zip(_YIN_KOCH, _YIN_KOCH[1:]):
+        if x <= math.log(r1):
+            w = (x - math.log(r0)) / (math.log(r1) - math.log(r0))
+            return k0 + w * (k1 - k0), n0 + w * (n1 - n0)
+    return _YIN_KOCH[-1][1], _YIN_KOCH[-1][2]
+
+
+def yin_koch(phi, re):
+    """U / U_t = k (1 - phi)^n with Yin & Koch's (k, n) at Re_t (yin_koch_fit)."""
+    k, n = yin_koch_fit(re)
+    return k * (1.0 - phi) ** n
+
+
 def batchelor(phi):
     """Batchelor 1972, dilute random suspension of spheres in Stokes flow: u/u_T = 1 - 6.55 phi."""
     return 1.0 - 6.55 * phi

@@ -327,10 +327,42 @@ class Study:
                 if render:
                     self.render(name)
         self.write_summary(rows)
+        fits = self.fit_hindered_settling(rows)
         from . import plots
-        for png in plots.study_plots(rows, curves, self.out, self.c["reynolds"], self.d, self.a):
+        for png in plots.study_plots(rows, curves, self.out, self.c["reynolds"], self.d, self.a,
+                                     fits):
             self.log(f"study: plot {png}")
         return rows
+
+    def fit_hindered_settling(self, rows):
+        """Per shape, u/u_T = k (1 - phi)^n fitted to the runs (at least two solid fractions),
+        against Yin & Koch's fit at the study's Reynolds number; written to fits.csv."""
+        re = self.c["reynolds"]
+        k_yk, n_yk = references.yin_koch_fit(re)
+        fits = {}
+        for shape in dict.fromkeys(r["shape"] for r in rows):
+            sel = [r for r in rows if r["shape"] == shape]
+            if len(sel) < 2:
+                continue
+            f = analysis.fit_hindered_settling([r["phi"] for r in sel],
+                                               [r["u_over_uT"] for r in sel],
+                                               [r["u_over_uT_error"] for r in sel])
+            f.update(shape=shape, points=len(sel), reynolds=re, yin_koch_k=k_yk, yin_koch_n=n_yk)
+            fits[shape] = f
+            self.log(f"study: {shape}s: u/u_T = k (1 - phi)^n fitted to {len(sel)} runs: "
+                     f"k = {f['k']:.3f} +- {f['k_error']:.3f}, n = {f['n']:.2f} +- "
+                     f"{f['n_error']:.2f} (rms residual {100 * f['rms_relative_residual']:.1f} %); "
+                     f"Yin & Koch at Re {re:g}: k = {k_yk:.2f}, n = {n_yk:.2f}")
+        if fits:
+            path = os.path.join(self.out, "fits.csv")
+            keys = ["shape", "points", "reynolds", "k", "k_error", "n", "n_error",
+                    "rms_relative_residual", "yin_koch_k", "yin_koch_n"]
+            with open(path, "w") as f:
+                f.write(",".join(keys) + "\n")
+                for fit in fits.values():
+                    f.write(",".join(str(fit[k]) for k in keys) + "\n")
+            self.log(f"study: fits {path}")
+        return fits
 
     def write_summary(self, rows):
         path = os.path.join(self.out, "summary.csv")
@@ -342,12 +374,12 @@ class Study:
         self.log(f"study: summary {path}")
 
     def render(self, name):
-        from . import bodymesh
+        from . import picture
         scene = os.path.join(self.out, name, "scene.yaml")
-        xdmf = bodymesh.write_surfaces(scene)
         try:
-            png = bodymesh.render_png(scene, xdmf, self.log)
-        except RuntimeError as e:  # a picture is not worth losing the study for
+            png = picture.render_png(scene, self.log)
+        except (RuntimeError, FileNotFoundError) as e:  # a picture is not worth the study
             self.log(f"study: {name}: no picture, the render failed: {str(e)[-600:]}")
             png = None
-        self.log(f"study: {name}: body surfaces {xdmf}" + (f", picture {png}" if png else ""))
+        self.log(f"study: {name}: body surfaces {picture.surfaces_path(scene)}" +
+                 (f", picture {png}" if png else ""))

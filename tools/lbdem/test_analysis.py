@@ -3,7 +3,7 @@ import unittest
 
 import numpy as np
 
-from lbdem import analysis, geometry
+from lbdem import analysis, geometry, references
 
 
 class SteadyStateAndErrorBar(unittest.TestCase):
@@ -50,6 +50,32 @@ class ZeroVolumeFluxFrame(unittest.TestCase):
         v = analysis.settling_velocity(up, j)
         self.assertAlmostEqual(float(v), -0.0161, places=12)
         self.assertAlmostEqual(float(analysis.slip_velocity(v, phi)), up - uf, places=12)
+
+
+class HinderedSettlingFit(unittest.TestCase):
+    def test_recovers_k_and_n_with_an_error_that_covers_the_noise(self):
+        rng = np.random.default_rng(5)
+        phi = np.array([0.05, 0.1, 0.2, 0.3, 0.4])
+        noise = 0.01
+        u = 0.88 * (1 - phi) ** 3.6 * (1 + noise * rng.standard_normal(phi.size))
+        f = analysis.fit_hindered_settling(phi, u, noise * u)
+        self.assertLess(abs(f["k"] - 0.88), 3 * f["k_error"] + 1e-12)
+        self.assertLess(abs(f["n"] - 3.6), 3 * f["n_error"] + 1e-12)
+        self.assertLess(f["n_error"], 0.3)
+        exact = analysis.fit_hindered_settling(phi, 0.9 * (1 - phi) ** 4.0)
+        self.assertAlmostEqual(exact["k"], 0.9, places=12)
+        self.assertAlmostEqual(exact["n"], 4.0, places=12)
+        self.assertLess(exact["rms_relative_residual"], 1e-12)
+
+    def test_yin_koch_table_and_interpolation(self):
+        self.assertEqual(references.yin_koch_fit(20.0), (0.88, 3.6))
+        k, n = references.yin_koch_fit(1.02)
+        self.assertAlmostEqual(k, 0.92)
+        self.assertAlmostEqual(n, 4.2)
+        k, n = references.yin_koch_fit(16.8)  # the study's Re: between 9.98 and 20
+        self.assertTrue(0.86 < k < 0.88 and 3.6 < n < 3.8)
+        self.assertEqual(references.yin_koch_fit(100.0), (0.88, 3.6))  # clamped
+        self.assertAlmostEqual(references.yin_koch(0.3, 20.0), 0.88 * 0.7**3.6)
 
 
 class Structure(unittest.TestCase):
