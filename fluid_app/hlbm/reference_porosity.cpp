@@ -105,7 +105,7 @@ double ReferencePorosity::read_points(const Eigen::Vector3d& ref,
   const auto iy = static_cast<std::int32_t>(sy), iz = static_cast<std::int32_t>(sz);
 #if defined(__AVX2__)
   {
-    const __m256d half = _mm256_set1_pd(0.5), zero = _mm256_setzero_pd();
+    const __m256d half = _mm256_set1_pd(kNearestHalf), zero = _mm256_setzero_pd();
     const __m256d rx = _mm256_set1_pd(ref.x()), ry = _mm256_set1_pd(ref.y()),
                   rz = _mm256_set1_pd(ref.z());
     const __m256d mx = _mm256_set1_pd(m_[0]), my = _mm256_set1_pd(m_[1]),
@@ -130,9 +130,9 @@ double ReferencePorosity::read_points(const Eigen::Vector3d& ref,
   }
 #else
   for (std::size_t i = 0; i < NearestStencil::kPadded; ++i) {
-    const double x = ref.x() + stencil.x[i] + 0.5;
-    const double y = ref.y() + stencil.y[i] + 0.5;
-    const double z = ref.z() + stencil.z[i] + 0.5;
+    const double x = ref.x() + stencil.x[i] + kNearestHalf;
+    const double y = ref.y() + stencil.y[i] + kNearestHalf;
+    const double z = ref.z() + stencil.z[i] + kNearestHalf;
     const bool on = x >= 0 && y >= 0 && z >= 0 && x < m_[0] && y < m_[1] && z < m_[2];
     voxel[i] = on ? static_cast<std::int32_t>(x) + iy * static_cast<std::int32_t>(y) +
                         iz * static_cast<std::int32_t>(z)

@@ -34,6 +34,22 @@ namespace lbdem::hlbm {
 
 enum class PorosityLookup { trilinear, nearest };
 
+// The nearest lookup's rounding, floor(x + kNearestHalf) in voxel coordinates: round half up,
+// with ties judged within kTieTolerance voxels. A point on a voxel face is a tie, and a body
+// whose centre sits on a multiple of h/2 with identity orientation (any quarter turn) puts
+// every stencil point of every node on a face when the voxel count is even (voxel faces then
+// lie on multiples of h from the centre, the stencil points too). Exact rounding would send
+// them all up, but the map into the reference lattice (ref = R^T r dx/h + shift, shift read
+// from the lattice origin) carries a round-off of a few 1e-15 voxels of one sign, and whether a
+// sum x + 0.5 then lands just below the integer or on it depends on x's magnitude: the points
+// below the centre fell to the lower voxel and those above it to the upper, both outward, and
+// the fluid saw the sphere 0.25 cells smaller in radius (K -16 % for phi 0.343 at 28 cells,
+// docs/validation.md section 7). The tolerance, far above the round-off of any coordinate of a
+// lattice of fewer than 1e6 voxels across and far below any length that matters, sends every
+// tie up, so a tie pose reads like a pose 1e-9 voxels away.
+inline constexpr double kTieTolerance = 1e-9;
+inline constexpr double kNearestHalf = 0.5 + kTieTolerance;
+
 // The nearest lookup's 19 stencil offsets R^T c_i (reference-lattice units) as it reads them:
 // one array per axis, padded to 20 with a zero offset, so the mapping of all points vectorizes.
 struct NearestStencil {
@@ -127,7 +143,7 @@ inline double ReferencePorosity::nearest(const Eigen::Vector3d& ref,
   const std::size_t sy = static_cast<std::size_t>(m_[0]);
   const std::size_t sz = sy * static_cast<std::size_t>(m_[1]);
   {
-    const double x = ref.x() + 0.5, y = ref.y() + 0.5, z = ref.z() + 0.5;
+    const double x = ref.x() + kNearestHalf, y = ref.y() + kNearestHalf, z = ref.z() + kNearestHalf;
     // Outside the padded lattice every point falls outside it or in its two fluid layers.
     if (!(x >= 0 && y >= 0 && z >= 0 && x < m_[0] && y < m_[1] && z < m_[2])) return 1.0;
     const Block b = block_[static_cast<std::size_t>(x) + sy * static_cast<std::size_t>(y) +

@@ -1,0 +1,325 @@
+// Pose invariance of the loads on a fixed body, as a property (issue 23, docs/validation.md
+// section 7). One body held in place in a triply periodic box (a simple cubic array), on the
+// real solver and the real shape catalogue's voxelization (SI spacing h = dx / 2, the calibrated
+// hydrodynamic radius of the scene defaults, the nearest lookup):
+// * drag: a uniform body force on the fluid; at steady state K = F / (6 pi mu a U), U the
+//   superficial velocity, a the radius (of the volume-equivalent sphere for a cube);
+// * torque: no force, the body spinning in place at Omega; at steady state T / (8 pi mu a^3 Omega).
+// The same body at 16 poses must feel the same load: (max - min) / mean <= 2 %, and the mean
+// must lie within the case's tolerance of its reference. The poses: the body centred between
+// nodes, on a node, a quarter cell off and at (0.3, 0.2, 0.1) cells, all four unrotated (the
+// poses scenes start from, and those where every stencil point of the nearest lookup can sit
+// on a voxel face), then 12 random sub-cell offsets with random orientations (fixed seed).
+//
+// Each case is one test (ctest pose_invariance_*, label validation); a case prints every pose.
+// POSE_CASE="sphere|cube drag|spin n size_cells tau reference" runs any other case through
+// PoseInvariance.Measure (the commands of docs/validation.md section 7).
+#include <gtest/gtest.h>
+#include <mpi.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "coupler_lib/geometry/build_shape.hpp"
+#include "coupler_lib/scene/band_calibration.hpp"
+#include "fluid_app/fluid_solver.hpp"
+#include "fluid_app/hlbm/solver_binding.hpp"
+#include "tests/fluid_app/fluid_test_setup.hpp"
+#include "tests/fluid_app/hlbm/hlbm_fixtures.hpp"
+
+namespace lbdem::hlbm {
+namespace {
+
+// The box in SI units, as the programs see a scene (a 1.6 mm box of water): the map into the
+// reference lattice then carries the round-off it has in a run.
+constexpr double kBox = 1.6e-3, kNu = 1e-6, kRho = 1000;
+
+// Sangani & Acrivos 1982, Eq. 60 / Table 1 (tools/lbdem/references.py): K of a simple cubic
+// array of spheres.
+double sangani_acrivos_k(double phi) {
+  static constexpr std::array<double, 31> alpha = {
+      1.000000,  1.418649,  2.012564,   2.331523,  2.564809, 2.584787, 2.873609, 3.340163,
+      3.536763,  3.504092,  3.253622,   2.689757,  2.037769, 1.809341, 1.877347, 1.534685,
+      0.9034708, 0.2857896, -0.5512626, -1.278724, 1.013350, 5.492491, 4.615388, -0.5736023,
+      -2.865924, -4.709215, -6.870076,  0.1455304, 12.51891, 9.742811, -5.566269};
+  const double chi = std::cbrt(phi / (std::numbers::pi / 6));
+  double k = 0, power = 1;
+  for (const double a : alpha) {
+    k += a * power;
+    power *= chi;
+  }
+  return k;
+}
+
+enum class Load { drag, spin };
+
+struct Case {
+  std::string kind;  // sphere | cube
+  Load load = Load::drag;
+  int n = 16;       // box edge, cells
+  double size = 8;  // diameter or edge, cells
+  double tau = 0.8;
+  double reference = 0;  // K (drag) or T / (8 pi mu a^3 Omega) (spin); 0: none (spread only)
+  double tolerance = 0;  // of the mean against the reference
+  double per_pose = 0;   // > 0: every pose within this of the reference as well
+};
+
+struct Pose {
+  Eigen::Vector3d offset;  // cells, from the box centre (between nodes)
+  Eigen::Quaterniond q;
+};
+
+std::vector<Pose> poses() {
+  const Eigen::Quaterniond id(1, 0, 0, 0);
+  std::vector<Pose> out = {{Eigen::Vector3d::Zero(), id},
+                           {Eigen::Vector3d::Constant(0.5), id},
+                           {Eigen::Vector3d::Constant(0.25), id},
+                           {Eigen::Vector3d(0.3, 0.2, 0.1), id}};
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> uni(0, 1);
+  std::normal_distribution<double> normal;
+  while (out.size() < 16) {
+    Eigen::Quaterniond q(normal(rng), normal(rng), normal(rng), normal(rng));
+    q.normalize();
+    out.push_back({Eigen::Vector3d(uni(rng), uni(rng), uni(rng)), q});
+  }
+  return out;
+}
+
+// The shape as the scene catalogue builds it for the fluid (coupler_lib/scene/shape_catalogue.cpp).
+Shape make_shape(const Case& c, double dx) {
+  ShapeParams p;
+  p.name = c.kind;
+  p.kind = c.kind;
+  p.size = c.size * dx;
+  const double e = c.kind == "sphere" ? p.size / 2 : p.size;
+  p.extents = {e, e, e};
+  p.clump.source = "fill";
+  p.clump.spheres = 1;  // the clump plays no part here
+  p.hydrodynamic_offset = *band_radius_excess_cells(c.tau, "nearest") * dx;
+  return build_shape(p, 0.5 * dx);
+}
+
+// Radius of the sphere (of the volume-equivalent sphere for a cube), cells.
+double radius(const Case& c) {
+  return c.kind == "sphere" ? c.size / 2 : c.size * std::cbrt(3 / (4 * std::numbers::pi));
+}
+
+struct Result {
+  double value = 0;  // K or T / (8 pi mu a^3 Omega)
+  double arm = 0;    // drag: |T| / |F| (cells), the lever arm of the load about the centre
+  int steps = 0;
+};
+
+// Steps until the load and the flow are steady (relative change below 1e-5 over a check
+// interval of n^2 / 16 steps, which leaves about 1e-4; for the drag also the load within 1e-4
+// of the force on the box).
+// The case's lattice in SI units (the parameters of a scene with that box).
+FluidParams lattice(const Case& c) {
+  FluidParams p = testing_fluid::lattice_params(c.n, c.n, c.n, c.tau);
+  p.dx = kBox / c.n;
+  p.domain = {kBox, kBox, kBox};
+  p.viscosity = kNu;
+  p.density = kRho;
+  p.units = UnitConverter::from_tau(p.dx, c.tau, kNu, kRho);
+  return p;
+}
+
+// The solver carries the steady flow of the previous pose into the next one (a new body field on
+// the same populations): Stokes flow has one steady state, which the next pose then reaches
+// from close by, 2-4 times sooner than from rest.
+Result steady_load(const Case& c, FluidSolver<double>& s, const Shape& shape, const Pose& pose) {
+  const int n = c.n;
+  const FluidParams p = lattice(c);
+  BodyField<double> bodies({&shape, 1}, subdomain_of(s, p), {Eigen::Vector3d::Zero(), p.units},
+                           s.porous(), PorosityLookup::nearest);
+  const double nu = (c.tau - 0.5) / 3.0;  // lattice
+  const double a = radius(c);
+  const double cells = double(n) * n * n;
+  // Lattice speeds about 1e-4 (Re ~ 0.01): a body force for U ~ 1e-4 at the reference drag, or
+  // an equator speed of 1e-4.
+  const double g = c.load == Load::drag
+                       ? 6 * std::numbers::pi * nu * a * 1e-4 * std::max(c.reference, 1.0) / cells
+                       : 0.0;
+  Eigen::Vector3d omega = Eigen::Vector3d::Zero();
+  if (c.load == Load::spin) omega = Eigen::Vector3d(0.3, -0.4, 0.866).normalized() * (1e-4 / a);
+  s.set_uniform_force({0, 0, g});
+  const BodyState st = test::state(0, Eigen::Vector3d::Constant(kBox / 2) + pose.offset * p.dx,
+                                   pose.q, Eigen::Vector3d::Zero(), omega / p.units.dt);
+  bodies.update({&st, 1});
+  std::vector<double> rho, u;
+  const int check = std::max(20, n * n / 16);
+  double last = 0;
+  Result r;
+  for (int k = 0; k < 100000; ++k) {
+    s.step();
+    const BodyLoad l = bodies.penalty_loads(k).at(0);
+    bodies.update({&st, 1});
+    if ((k + 1) % check != 0) continue;
+    Eigen::Vector3d f, t;
+    for (int i = 0; i < 3; ++i) {
+      f[i] = l.f[i] / p.units.force();
+      t[i] = l.t[i] / p.units.torque();
+    }
+    double now = 0;
+    bool steady = false;
+    if (c.load == Load::drag) {
+      s.macroscopic(rho, u);
+      double sum = 0;
+      for (std::size_t i = 2; i < u.size(); i += 3) sum += u[i];
+      now = sum / cells;
+      steady =
+          std::abs(now - last) < 1e-5 * std::abs(now) && std::abs(f.z() / (g * cells) - 1) < 1e-4;
+      r.value = f.z() / (6 * std::numbers::pi * nu * a * now);
+      r.arm = t.norm() / std::abs(f.z());
+    } else {
+      now = -t.dot(omega.normalized());
+      steady = std::abs(now - last) < 1e-5 * std::abs(now);
+      r.value = now / (8 * std::numbers::pi * nu * a * a * a * omega.norm());
+    }
+    if (steady) {
+      r.steps = k + 1;
+      return r;
+    }
+    last = now;
+  }
+  ADD_FAILURE() << "no steady state after 100000 steps";
+  return r;
+}
+
+void check_case(const Case& c) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const Shape shape = make_shape(c, kBox / c.n);
+  const char* what = c.load == Load::drag ? "K" : "T / (8 pi mu a^3 Omega)";
+  std::printf("%s %s, %.2f cells across in a box of %d (phi %.3f), tau %.2f, %d voxels across\n",
+              c.kind.c_str(), c.load == Load::drag ? "drag" : "spin", c.size, c.n,
+              (c.kind == "sphere" ? std::numbers::pi / 6 : 1.0) * std::pow(c.size / c.n, 3), c.tau,
+              shape.voxels.n[0]);
+  std::vector<double> values;
+  FluidSolver<double> solver(lattice(c), MPI_COMM_SELF);
+  for (const Pose& p : poses()) {
+    const Result r = steady_load(c, solver, shape, p);
+    values.push_back(r.value);
+    std::printf("  offset (%.3f, %.3f, %.3f) q (%+.3f, %+.3f, %+.3f, %+.3f): %s = %.5f",
+                p.offset.x(), p.offset.y(), p.offset.z(), p.q.w(), p.q.x(), p.q.y(), p.q.z(), what,
+                r.value);
+    if (c.reference > 0) std::printf(" (%+.2f %%)", 100 * (r.value / c.reference - 1));
+    if (c.load == Load::drag) std::printf(", lever arm %.3f cells", r.arm);
+    std::printf(", %d steps\n", r.steps);
+    std::fflush(stdout);
+    if (c.per_pose > 0) {
+      EXPECT_LT(std::abs(r.value / c.reference - 1), c.per_pose)
+          << "offset " << p.offset.transpose() << " q " << p.q.coeffs().transpose();
+    }
+  }
+  const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+  double mean = 0;
+  for (const double v : values) mean += v / values.size();
+  const double spread = (*hi - *lo) / mean;
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("%s over %zu poses: mean %.5f", what, values.size(), mean);
+  if (c.reference > 0)
+    std::printf(" (reference %.4f, %+.2f %%, tolerance %.0f %%)", c.reference,
+                100 * (mean / c.reference - 1), 100 * c.tolerance);
+  std::printf(", (max - min) / mean %.2f %% (bound 2 %%), %.1f s\n", 100 * spread, wall);
+  EXPECT_LE(spread, 0.02);
+  if (c.reference > 0) {
+    EXPECT_LE(std::abs(mean / c.reference - 1), c.tolerance);
+  }
+}
+
+double phi_of(const Case& c) {
+  return (c.kind == "sphere" ? std::numbers::pi / 6 : 1.0) * std::pow(c.size / c.n, 3);
+}
+
+Case sphere_in_array(Load load, int n, double phi, double tau) {
+  Case c;
+  c.kind = "sphere";
+  c.load = load;
+  c.n = n;
+  c.size = 2 * n * std::cbrt(3 * phi / (4 * std::numbers::pi));
+  c.tau = tau;
+  if (load == Load::drag) c.reference = sangani_acrivos_k(phi_of(c));
+  return c;
+}
+
+// Dilute array, d = 11.5 cells (phi 0.1, tau 1): centred between nodes its 28 voxels put every
+// stencil point on a voxel face, and before the tie tolerance the round-off split the ties
+// (K -19.5 % there). Measured (docs/validation.md section 7): mean -1.76 %, spread 1.41 %;
+// tolerance 3 % (1.7x).
+TEST(PoseInvariance, SphereDragDiluteD12Tau1) {
+  Case c = sphere_in_array(Load::drag, 20, 0.1, 1.0);
+  c.tolerance = 0.03;
+  check_case(c);
+}
+
+// The same at tau 0.8 (d = 12.1 cells, 28 voxels, ties split before the fix).
+TEST(PoseInvariance, SphereDragDiluteD12Tau08) {
+  Case c = sphere_in_array(Load::drag, 21, 0.1, 0.8);
+  c.tolerance = 0.03;
+  check_case(c);
+}
+
+// The issue's outlier: phi 0.343, 32 cells per period (d = 27.8 cells, 60 voxels), tau 0.8;
+// centred, K read 12.96 before the tie tolerance (-16 % against Zick & Homsy's 15.4). Every pose
+// and the mean must read within 5 % of Zick & Homsy (Sangani & Acrivos's series: 15.53).
+TEST(PoseInvariance, SphereDragDenseD28Phi0343) {
+  Case c = sphere_in_array(Load::drag, 32, 0.343, 0.8);
+  c.reference = 15.4;  // Zick & Homsy 1982, phi 0.343
+  c.tolerance = 0.05;
+  c.per_pose = 0.05;
+  check_case(c);
+}
+
+// Spinning sphere (the torque path), d = 8 cells in a box of 4 d as coupled_sphere_spin:
+// T against Stokes' 8 pi mu a^3 Omega, tolerance 5 % (that test's). KNOWN TO FAIL the spread
+// (ctest WILL_FAIL; docs/validation.md section 7): mean +1.65 %, spread 2.94 %: the four unrotated
+// poses read +0.20 %, the rotated ones +1.65 to +3.19 % (the nearest lookup's stencil aligned with
+// the voxel lattice; docs/validation.md section 7).
+TEST(PoseInvariance, SphereSpinD8) {
+  Case c = sphere_in_array(Load::spin, 32, 0.0082, 0.8);
+  c.size = 8;
+  c.reference = 1.0;
+  c.tolerance = 0.05;
+  check_case(c);
+}
+
+// Cube of edge 8 cells in a box of 24 (phi 0.037, tau 1): no published drag for a cubic array
+// of cubes, so the spread alone is asserted. KNOWN TO FAIL (ctest WILL_FAIL; docs/validation.md
+// section 7), spread 5.3 %: unrotated, K moves by 3.7 % with the sub-cell offset (faces on node
+// planes or between them), the rotated poses by 2.0 % (docs/validation.md section 7).
+TEST(PoseInvariance, CubeDragDiluteD8) {
+  Case c;
+  c.kind = "cube";
+  c.n = 24;
+  c.size = 8;
+  c.tau = 1.0;
+  check_case(c);
+}
+
+// Any case from the environment, for the measurements of docs/validation.md section 7:
+// POSE_CASE="sphere drag 32 27.79 0.8 15.4" (kind, load, box, size in cells, tau, reference or 0).
+TEST(PoseInvariance, Measure) {
+  const char* env = std::getenv("POSE_CASE");
+  if (env == nullptr) GTEST_SKIP() << "set POSE_CASE to measure a case";
+  char kind[16], load[16];
+  Case c;
+  ASSERT_EQ(
+      std::sscanf(env, "%15s %15s %d %lf %lf %lf", kind, load, &c.n, &c.size, &c.tau, &c.reference),
+      6);
+  c.kind = kind;
+  c.load = std::string(load) == "spin" ? Load::spin : Load::drag;
+  c.tolerance = 1.0;
+  check_case(c);
+}
+
+}  // namespace
+}  // namespace lbdem::hlbm
