@@ -63,6 +63,23 @@ LocalScan scan_block(const MacroFields& f, double max_mach) {
   return s;
 }
 
+void merge_scan(LocalScan& into, const LocalScan& part, const std::array<int, 3>& global) {
+  const double max_mach = std::max(into.max_mach, part.max_mach);
+  if (part.kind > into.kind) {
+    into = part;
+  } else if (part.kind == into.kind && part.kind != Instability::none) {
+    auto order = [&](const std::array<int, 3>& c) {
+      return (static_cast<long long>(c[2]) * global[1] + c[1]) * global[0] + c[0];
+    };
+    const bool better = part.kind == Instability::mach ? part.mach > into.mach
+                                                       : order(part.cell) < order(into.cell);
+    const long long bad = into.bad_cells + part.bad_cells;
+    if (better) into = part;
+    into.bad_cells = bad;
+  }
+  into.max_mach = max_mach;
+}
+
 StabilityWatch::StabilityWatch(const StabilityParams& params, const UnitConverter& units,
                                MPI_Comm comm, std::string last_good_file)
     : params_(params), units_(units), comm_(comm), last_good_file_(std::move(last_good_file)) {}
@@ -92,14 +109,25 @@ int reporting_rank(const LocalScan& s, Instability kind, const FieldBlock& b, MP
 
 }  // namespace
 
-std::optional<StabilityFailure> StabilityWatch::check(long step, double time, MacroFields& fields) {
-  const LocalScan s = scan_block(fields, params_.max_mach);
+std::optional<StabilityFailure> StabilityWatch::check(long step, double time,
+                                                      const MacroFields& fields) {
+  return check(step, time, scan_block(fields, params_.max_mach), fields.box,
+               [&](LastGoodFields& lg) {
+                 std::copy(fields.rho.begin(), fields.rho.end(), lg.rho.begin());
+                 std::copy(fields.u.begin(), fields.u.end(), lg.u.begin());
+               });
+}
+
+std::optional<StabilityFailure> StabilityWatch::check(
+    long step, double time, const LocalScan& s, const FieldBlock& box,
+    const std::function<void(LastGoodFields&)>& keep) {
   int kind = static_cast<int>(s.kind);
   MPI_Allreduce(MPI_IN_PLACE, &kind, 1, MPI_INT, MPI_MAX, comm_);
   if (kind == static_cast<int>(Instability::none)) {
     double mach = s.max_mach;
     MPI_Allreduce(MPI_IN_PLACE, &mach, 1, MPI_DOUBLE, MPI_MAX, comm_);
-    std::swap(last_good_, fields);
+    last_good_.resize(box);
+    keep(last_good_);
     last_good_step_ = step;
     last_good_time_ = time;
     last_good_mach_ = mach;
@@ -108,7 +136,7 @@ std::optional<StabilityFailure> StabilityWatch::check(long step, double time, Ma
 
   InstabilityReport r;
   r.kind = static_cast<Instability>(kind);
-  const int root = reporting_rank(s, r.kind, fields.box, comm_);
+  const int root = reporting_rank(s, r.kind, box, comm_);
   // One node's description travels from the rank that holds it to everyone.
   std::array<double, 8> node{double(s.cell[0]),
                              double(s.cell[1]),
@@ -138,7 +166,11 @@ std::optional<StabilityFailure> StabilityWatch::check(long step, double time, Ma
   if (last_good_step_ >= 0) {
     const FieldView view = volume_view(last_good_.box.global, 1);
     const FieldQuantities all{true, true, true, true};
-    write_field_file(last_good_file_, comm_, {view}, all, last_good_, units_, last_good_step_,
+    MacroFields lg;  // in double only for the writer, and only now
+    lg.box = last_good_.box;
+    lg.rho.assign(last_good_.rho.begin(), last_good_.rho.end());
+    lg.u.assign(last_good_.u.begin(), last_good_.u.end());
+    write_field_file(last_good_file_, comm_, {view}, all, lg, units_, last_good_step_,
                      last_good_time_);
     int rank = 0;
     MPI_Comm_rank(comm_, &rank);

@@ -44,7 +44,6 @@ BodyField<T>::BodyField(std::span<const Shape> shapes, const Subdomain& sub,
   field_.body.assign(cells, -1);
   field_.bodies.clear();
   field_.active = false;
-  inside_.assign(cells, -1);
   shapes_.reserve(shapes.size());
   for (const Shape& s : shapes) shapes_.emplace_back(s.voxels);
 }
@@ -128,16 +127,23 @@ float BodyField<T>::evaluate(std::int32_t slot, std::uint32_t cell, int x, int y
                           rel_[2][static_cast<std::size_t>(z)]);
   const float d = porosity(tracked_[static_cast<std::size_t>(slot)], r);
   // A cell whose interior owner changes is reset by combine(); the band cells (old and new)
-  // are added by the callers.
-  std::int32_t& in = inside_[cell];
+  // are added by the callers. The interior map is the field itself: d = 0 exactly where a
+  // body's interior covers the cell (band cells have 0 < d < 1), with that body's index, so
+  // no per-cell map of its own is kept (4 B per cell, docs/performance.md "Memory per cell").
+  // The field is read by the kernel only after the update, once combine() has run.
+  float& fd = field_.d[cell];
+  std::int32_t& fb = field_.body[cell];
+  const std::int32_t in = fd == 0.0f ? fb : -1;
   if (d == 0.0f) {
     if (in != slot) {
       if (in >= 0) ++stats.interior_conflicts;
-      in = slot;
+      fd = 0.0f;
+      fb = slot;
       touched_.push_back(cell);
     }
   } else if (in == slot) {
-    in = -1;
+    fd = 1.0f;
+    fb = -1;
     touched_.push_back(cell);
   }
   return d;
@@ -189,8 +195,9 @@ void BodyField<T>::remove(std::int32_t slot, UpdateStats& stats) {
     for (int y : lists[1])
       for (int x : lists[0]) {
         const auto c = static_cast<std::uint32_t>(sub_.box.index(x, y, z));
-        if (inside_[c] == slot) {
-          inside_[c] = -1;
+        if (field_.d[c] == 0.0f && field_.body[c] == slot) {  // its interior
+          field_.d[c] = 1.0f;
+          field_.body[c] = -1;
           touched_.push_back(c);
         }
       }
@@ -375,8 +382,11 @@ double BodyField<T>::displacement(const Tracked& t, const Tracked& next) const {
 template <class T>
 void BodyField<T>::combine(std::span<const std::int32_t> order) {
   for (std::uint32_t c : touched_) {
-    field_.body[c] = inside_[c];
-    field_.d[c] = inside_[c] >= 0 ? 0.0f : 1.0f;
+    // Interior cells (d = 0, written by evaluate()) keep their body; the rest start as fluid.
+    if (field_.d[c] != 0.0f) {
+      field_.d[c] = 1.0f;
+      field_.body[c] = -1;
+    }
   }
   for (std::int32_t slot : order)
     for (const BandCell& b : tracked_[static_cast<std::size_t>(slot)].band)
@@ -422,7 +432,6 @@ UpdateStats BodyField<T>::update(std::span<const BodyState> states, UpdateMode m
   if (mode == UpdateMode::full) {
     std::fill(field_.d.begin(), field_.d.end(), 1.0f);
     std::fill(field_.body.begin(), field_.body.end(), -1);
-    std::fill(inside_.begin(), inside_.end(), -1);
     for (Tracked& t : tracked_) t.band.clear();
   }
 

@@ -146,8 +146,7 @@ class BodyField {
   Subdomain sub_;
   LatticeFrame frame_;
   PorousField<T>& field_;
-  std::vector<std::int32_t> inside_;  // per cell: body whose interior (d = 0) covers it
-  std::vector<Tracked> tracked_;      // by slot
+  std::vector<Tracked> tracked_;  // by slot
   std::unordered_map<std::int64_t, std::int32_t> slots_;
   std::vector<std::uint32_t> touched_;  // cells evaluated in this update
   Window window_;                       // band search scratch

@@ -1,5 +1,6 @@
 #include "fluid_app/output/run_watch.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
@@ -73,6 +74,32 @@ RunWatch<T>::RunWatch(AppContext& ctx, FluidRun<T>& run, long long series_resume
   started_ = std::chrono::steady_clock::now();
 }
 
+namespace {
+
+// Planes of the local block per slab when the stability check runs without field output:
+// the state is assembled a slab at a time (a few planes of 32 B per node), never whole.
+constexpr int kSlabPlanes = 8;
+
+// Density and velocity of local planes z0 .. z1-1 (interior, 1-based) into `out`, exactly as
+// fill_macro_fields writes them (the solver's density and velocity per node).
+template <class T>
+void fill_slab(const FluidSolver<T>& solver, int z0, int z1, MacroFields& out) {
+  const LocalBox& b = solver.box();
+  out.resize(FieldBlock{
+      b.global, {b.offset[0], b.offset[1], b.offset[2] + z0 - 1}, {b.n[0], b.n[1], z1 - z0}});
+  std::size_t k = 0;
+  for (int z = z0; z < z1; ++z)
+    for (int y = 1; y <= b.n[1]; ++y)
+      for (int x = 1; x <= b.n[0]; ++x, ++k) {
+        const CellIndex c = b.index(x, y, z);
+        out.rho[k] = double(solver.density(c));
+        const auto v = solver.velocity(c);
+        for (int a = 0; a < 3; ++a) out.u[3 * k + a] = double(v[a]);
+      }
+}
+
+}  // namespace
+
 template <class T>
 void RunWatch<T>::observe(const FluidSolver<T>& solver, const StepInfo& info) {
   if (failure_) return;
@@ -80,8 +107,31 @@ void RunWatch<T>::observe(const FluidSolver<T>& solver, const StepInfo& info) {
   const bool check = stability_ && (stability_->due(step) || (extra_ && extra_(step)));
   const bool write = output_ && output_->due(step);
   if (!check && !write) return;
+  if (check && !write) {
+    // Scan in slabs, then (if every rank passed) assemble the state again, slab by slab, into
+    // the watch's float copy: a second pass over the lattice every `interval` steps instead
+    // of a whole-lattice buffer of 32 B per node.
+    const LocalBox& b = solver.box();
+    MacroFields slab;
+    LocalScan scan;
+    for (int z = 1; z <= b.n[2]; z += kSlabPlanes) {
+      fill_slab(solver, z, std::min(z + kSlabPlanes, b.n[2] + 1), slab);
+      merge_scan(scan, scan_block(slab, stability_->max_mach()), b.global);
+    }
+    const FieldBlock block{b.global, b.offset, b.n};
+    failure_ = stability_->check(step, info.time, scan, block, [&](LastGoodFields& lg) {
+      std::size_t at = 0;
+      for (int z = 1; z <= b.n[2]; z += kSlabPlanes) {
+        fill_slab(solver, z, std::min(z + kSlabPlanes, b.n[2] + 1), slab);
+        std::copy(slab.rho.begin(), slab.rho.end(), lg.rho.begin() + std::ptrdiff_t(at));
+        std::copy(slab.u.begin(), slab.u.end(), lg.u.begin() + std::ptrdiff_t(3 * at));
+        at += slab.rho.size();
+      }
+    });
+    if (failure_ && ctx_.rank == 0) ctx_.log->error("{}", failure_->message);
+    return;
+  }
   fill_macro_fields(solver, fields_);
-  const MacroFields* current = &fields_;
   if (check) {
     failure_ = stability_->check(step, info.time, fields_);
     if (failure_) {
@@ -89,9 +139,8 @@ void RunWatch<T>::observe(const FluidSolver<T>& solver, const StepInfo& info) {
       if (ctx_.rank == 0) ctx_.log->error("{}", failure_->message);
       return;
     }
-    current = &stability_->last_good();  // the watch took the checked state over
   }
-  if (write) output_->write(step, info.time, *current);
+  output_->write(step, info.time, fields_);
 }
 
 template <class T>

@@ -1,8 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <vector>
 
 #include "fluid_app/stability_watch.hpp"
 #include "output/output_test_support.hpp"
@@ -84,8 +86,9 @@ TEST(StabilityWatch, FailingCheckWritesTheLastGoodState) {
   f.rho[box.index(2, 1, 0)] = 1.25;  // still fine: becomes the last good state
   buffer = f;
   EXPECT_FALSE(w.check(20, 0.2, buffer));
-  EXPECT_EQ(w.last_good().rho, f.rho);   // taken over, not copied
-  EXPECT_EQ(buffer.rho, calm(box).rho);  // the buffer now holds the previous good state
+  // Kept as a float copy; the checked fields are left as they were.
+  EXPECT_EQ(w.last_good().rho, std::vector<float>(f.rho.begin(), f.rho.end()));
+  EXPECT_EQ(buffer.rho, f.rho);
   EXPECT_FALSE(std::filesystem::exists(lg));
 
   MacroFields bad = f;
@@ -103,6 +106,60 @@ TEST(StabilityWatch, FailingCheckWritesTheLastGoodState) {
   const auto rho = test::read_dataset(lg, "/volume/density");
   ASSERT_EQ(rho.values.size(), 12u);
   EXPECT_DOUBLE_EQ(rho.values[box.index(2, 1, 0)], 1250.0);
+}
+
+TEST(StabilityScan, SlabsMergeToTheScanOfTheWholeBlock) {
+  FieldBlock box{{8, 8, 8}, {2, 0, 1}, {4, 3, 6}};
+  MacroFields f = calm(box);
+  f.u[3 * box.index(3, 2, 1)] = 0.5;   // Mach 0.87
+  f.u[3 * box.index(1, 0, 4)] = -0.6;  // Mach 1.04, the fastest, in a later slab
+  f.rho[box.index(1, 1, 5)] = -0.1;    // density: worse than Mach, later in global order
+  f.rho[box.index(2, 2, 2)] = -0.2;
+  for (int planes : {1, 2, 4}) {
+    LocalScan merged;
+    for (int z0 = 0; z0 < box.n[2]; z0 += planes) {
+      MacroFields slab;
+      const int nz = std::min(planes, box.n[2] - z0);
+      slab.resize(
+          FieldBlock{box.global, {box.lo[0], box.lo[1], box.lo[2] + z0}, {box.n[0], box.n[1], nz}});
+      for (int k = 0; k < nz; ++k)
+        for (int j = 0; j < box.n[1]; ++j)
+          for (int i = 0; i < box.n[0]; ++i) {
+            const std::size_t c = box.index(i, j, z0 + k), s = slab.box.index(i, j, k);
+            slab.rho[s] = f.rho[c];
+            for (int a = 0; a < 3; ++a) slab.u[3 * s + a] = f.u[3 * c + a];
+          }
+      merge_scan(merged, scan_block(slab, 0.3), box.global);
+    }
+    const LocalScan whole = scan_block(f, 0.3);
+    EXPECT_EQ(merged.kind, whole.kind) << planes;
+    EXPECT_EQ(merged.cell, whole.cell) << planes;
+    EXPECT_EQ(merged.bad_cells, whole.bad_cells) << planes;
+    EXPECT_EQ(merged.rho, whole.rho) << planes;
+    EXPECT_EQ(merged.max_mach, whole.max_mach) << planes;
+    f.rho[box.index(1, 1, 5)] = -0.1;
+  }
+  // Mach alone: the fastest node, wherever its slab.
+  f.rho[box.index(1, 1, 5)] = 1.0;
+  f.rho[box.index(2, 2, 2)] = 1.0;
+  LocalScan merged;
+  for (int z0 = 0; z0 < box.n[2]; ++z0) {
+    MacroFields slab;
+    slab.resize(
+        FieldBlock{box.global, {box.lo[0], box.lo[1], box.lo[2] + z0}, {box.n[0], box.n[1], 1}});
+    for (int j = 0; j < box.n[1]; ++j)
+      for (int i = 0; i < box.n[0]; ++i) {
+        const std::size_t c = box.index(i, j, z0), s = slab.box.index(i, j, 0);
+        slab.rho[s] = f.rho[c];
+        for (int a = 0; a < 3; ++a) slab.u[3 * s + a] = f.u[3 * c + a];
+      }
+    merge_scan(merged, scan_block(slab, 0.3), box.global);
+  }
+  const LocalScan whole = scan_block(f, 0.3);
+  EXPECT_EQ(merged.kind, Instability::mach);
+  EXPECT_EQ(merged.cell, whole.cell);
+  EXPECT_EQ(merged.mach, whole.mach);
+  EXPECT_EQ(merged.bad_cells, 2);
 }
 
 TEST(StabilityWatch, IntervalZeroSwitchesItOff) {
