@@ -196,8 +196,10 @@ void CouplingSession::report_work(const CouplingTimes& coupler) {
   const double n = double(std::max<std::int64_t>(step_ - first_, 1));
   double busy = 0;
   for (const Part& p : parts_) busy += p.seconds;
-  std::vector<std::string> names{"busy_s_per_step", "max_rss_mib"};
-  std::vector<double> mine{busy / n, max_rss_mib()};
+  std::vector<std::string> names{"busy_s_per_step", "max_rss_mib", "coupler_bytes_per_step",
+                                 "coupler_messages_per_step"};
+  std::vector<double> mine{busy / n, max_rss_mib(), double(coupler.bytes) / n,
+                           double(coupler.messages) / n};
   for (const Counter& c : counters_) {
     names.push_back(c.name);
     mine.push_back(c.value);
