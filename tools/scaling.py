@@ -100,13 +100,22 @@ def launch(args, name, scene, fluid, dem, nice=0):
     os.makedirs(folder, exist_ok=True)
     scene = dict(scene, name=name)
     path = os.path.join(folder, "scene.yaml")
-    with open(path, "w") as f:
-        json.dump(scene, f, indent=1)  # JSON is YAML
+    text = json.dumps(scene, indent=1)  # JSON is YAML
     cmd = run.coupled_command(args.build, path, fluid, dem)
     if nice:
         cmd = ["nice", "-n", str(nice)] + cmd
-    print(f"# {name}: {' '.join(cmd)}", flush=True)
-    wall, _ = run.execute(cmd, path, timeout=args.timeout, log=os.path.join(folder, "run.log"))
+    done = os.path.join(folder, "wall_s.txt")
+    if args.reuse and os.path.exists(done) and os.path.exists(path) and open(path).read() == text:
+        print(f"# {name}: reused (--reuse) from {folder}", flush=True)
+        with open(done) as f:
+            wall = float(f.read())
+    else:
+        with open(path, "w") as f:
+            f.write(text)
+        print(f"# {name}: {' '.join(cmd)}", flush=True)
+        wall, _ = run.execute(cmd, path, timeout=args.timeout, log=os.path.join(folder, "run.log"))
+        with open(done, "w") as f:
+            f.write(f"{wall}\n")
     r = Run(path, args.build)
     return point(r.summary("fluid"), r.summary("dem"), wall)
 
@@ -201,17 +210,19 @@ def fit(args):
     print("# per-unit costs fitted on 1 fluid : 1 DEM rank (halo: 2 : 1), load average "
           f"{os.getloadavg()[0]:.1f}")
     names = {"cell": "plain cell (lattice)", "covered": "covered cell, extra (lattice)",
-             "band": "band cell (porosity + momentum exchange)",
-             "interior": "body-interior cell (porosity)", "body": "body in a rank's table",
+             "exchange_step": "coupler exchange, fixed per step", "dem_step": "DEM, fixed per step",
+             "porosity_cell": "covered cell (porosity + momentum exchange)",
+             "body": "body in a rank's table (porosity + momentum exchange)",
              "halo_byte": "halo byte", "coupler_byte": "coupler byte",
              "atom_substep": "DEM atom or ghost per substep"}
     for k, v in model.costs.items():
-        print(f"  {names[k]:<42} {v * 1e9:10.3f} ns")
+        print(f"  {names[k]:<56} {v * 1e9:12.3f} ns")
     for k, v in model.memory.items():
-        print(f"  memory {k:<35} {v:12.1f} {'B' if 'base' not in k else 'B (per rank)'}")
-    print("# check: predicted against measured time per coupled step (fluid rank 0's parts "
-          "summed), busiest fluid rank's busy time")
-    print(f"  {'run':<16} {'ranks':>5} {'predicted ms':>12} {'measured ms':>11} {'ratio':>6} | "
+        print(f"  memory {k:<49} {v:12.1f} {'B' if 'base' not in k else 'B (per rank)'}")
+    print("# check: time per coupled step (fluid rank 0's parts summed), measured against the "
+          "model's max(fluid, DEM) (cores of their own) and fluid + DEM (shared cores); the "
+          "busiest fluid rank's busy time, predicted and measured")
+    print(f"  {'run':<16} {'ranks':>5} {'measured ms':>11} {'max(F,D)':>9} {'F + D':>8} | "
           f"{'busy pred ms':>12} {'busy meas ms':>12}")
     for name, p in points.items():
         check_line(model, name, p, substeps_of(args, name))
@@ -224,10 +235,10 @@ def len_bodies(args, name):
 
 
 def check_line(model, name, p, substeps):
-    pred, fpred, _ = model.step(p["fluid"], p["dem"], substeps)
+    pred, f, d = model.step(p["fluid"], p["dem"], substeps)
     busy = max(r["busy_s_per_step"] for r in p["fluid"])
-    print(f"  {name:<16} {len(p['fluid'])}:{len(p['dem']):<3} {1e3 * pred:12.2f} "
-          f"{1e3 * p['step']:11.2f} {pred / p['step']:6.2f} | "
+    print(f"  {name:<16} {len(p['fluid'])}:{len(p['dem']):<3} {1e3 * p['step']:11.2f} "
+          f"{1e3 * pred:9.2f} {1e3 * (f + d):8.2f} | "
           f"{1e3 * max(model.fluid_busy(r) for r in p['fluid']):12.2f} {1e3 * busy:12.2f}",
           flush=True)
 
@@ -345,7 +356,7 @@ def paper_run(args, model):
     base = packing.Packing(len(x), packing.PHI_START, st.d)
     base.x, base.q = x, q
     scene, cells, p = st.suspension_scene("cube", 0.3, base)
-    scene["fluid"]["output"] = {"directory": "."}
+    del scene["fluid"]["output"]  # no fields or series: the run measures the step
     scene["time"] = {"end": args.steps * st.dt, "progress_interval": 1.0e9}
     scene["coupling"] = {"output_interval": args.steps * st.dt}
     name = f"paper_{n}_{args.ranks[0]}x{args.ranks[1]}"
@@ -375,6 +386,12 @@ def paper_run(args, model):
     print_counters(name + ":", r)
     if model:
         check_line(model, name, r, sub)
+        for side, rows in (("fluid", r["fluid"]), ("DEM", r["dem"])):
+            pred = [model.fluid_memory(x) if side == "fluid" else model.dem_memory(x, n)
+                    for x in rows]
+            measured = ", ".join(f"{x['max_rss_mib']:.0f}" for x in rows)
+            model_mib = ", ".join(f"{x / 2**20:.0f}" for x in pred)
+            print(f"  max RSS per {side} rank: measured {measured} MiB, model {model_mib} MiB")
 
 
 # ---- ctest ------------------------------------------------------------------------------------
@@ -451,6 +468,8 @@ def main():
     ap.add_argument("--out", default=os.path.join(ROOT, "runs", "scaling"))
     ap.add_argument("--steps", type=int, default=40)
     ap.add_argument("--timeout", type=float, default=3600)
+    ap.add_argument("--reuse", action="store_true",
+                    help="take a run whose folder holds the same scene and a finished run")
     ap.add_argument("--ci", action="store_true")
     ap.add_argument("--fit", action="store_true")
     ap.add_argument("--weak", type=int, nargs="*")

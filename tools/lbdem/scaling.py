@@ -4,13 +4,18 @@
 A fluid rank's busy time per step (lattice + porosity and momentum exchange) is a sum over its
 counters times per-unit costs:
 
-    busy = c_cell cells + c_cov covered_cells                       (lattice: plain and covered)
-         + c_band band_cells + c_int body_interior_cells + c_body bodies_in_table   (porosity)
-         + c_halo halo_bytes_per_step                               (halo packing and messages)
+    busy = c_cell cells + c_cov covered_cells               (lattice: plain and covered cells)
+         + c_pcov covered_cells + c_body bodies_in_table     (porosity and momentum exchange)
+         + c_halo halo_bytes_per_step                        (halo packing and messages)
 
-its coupler exchange c_byte x coupler_bytes_per_step, and a DEM rank's busy time
-c_atom x (atoms + ghost_atoms) x substeps. The coupled step (the programs overlap their work)
-takes the longer of the two sides: max(max_r fluid busy + exchange, max_r DEM busy + exchange).
+(the band and the interiors are counted apart, but one cube size holds them in a fixed ratio:
+the fit takes their sum, the covered cells)
+
+its coupler exchange c_x + c_byte x coupler_bytes_per_step (a fixed part per step: the counts
+all-to-all, the calls), and a DEM rank's busy time c_dem + c_atom x (atoms + ghost_atoms) x
+substeps. On cores of their own the programs overlap their work and the coupled step takes the
+longer side, max(max_r fluid busy + exchange, max_r DEM busy + exchange); where they share cores
+(this machine) the sum of the two is the other bound.
 
 The costs are fitted by non-negative least squares on runs measured on one core; the counters
 of a layout never run come from its geometry (`uniform_counters`): cells of the blocks, bodies
@@ -155,16 +160,17 @@ class Model:
 
     def fluid_busy(self, f):
         c = self.costs
-        return (c["cell"] * f["cells"] + c["covered"] * f["covered_cells"]
-                + c["band"] * f["band_cells"] + c["interior"] * f["body_interior_cells"]
+        return (c["cell"] * f["cells"] + (c["covered"] + c["porosity_cell"]) * f["covered_cells"]
                 + c["body"] * f["bodies_in_table"] + c.get("halo_byte", 0.0)
                 * f["halo_bytes_per_step"])
 
     def exchange(self, side):
-        return self.costs["coupler_byte"] * side["coupler_bytes_per_step"]
+        return self.costs["exchange_step"] + self.costs["coupler_byte"] * side[
+            "coupler_bytes_per_step"]
 
     def dem_busy(self, d, substeps):
-        return self.costs["atom_substep"] * (d["atoms"] + d["ghost_atoms"]) * substeps
+        return self.costs["dem_step"] + self.costs["atom_substep"] * (
+            d["atoms"] + d["ghost_atoms"]) * substeps
 
     def step(self, fluid_ranks, dem_ranks, substeps):
         """Predicted time per coupled step from lists of per-rank counter dicts."""
@@ -189,13 +195,14 @@ def fit_costs(runs, halo_runs=()):
     fluid ranks, for c_halo (the one cost a single rank cannot show)."""
     lat = nnls([[r["f"]["cells"], r["f"]["covered_cells"]] for r in runs],
                [r["lattice"] for r in runs])
-    por = nnls([[r["f"]["band_cells"], r["f"]["body_interior_cells"], r["f"]["bodies_in_table"]]
-                for r in runs], [r["porosity"] for r in runs])
-    xb = nnls([[r["f"]["coupler_bytes_per_step"]] for r in runs], [r["exchange"] for r in runs])
-    dem = nnls([[(r["d"]["atoms"] + r["d"]["ghost_atoms"]) * r["substeps"]] for r in runs],
+    por = nnls([[r["f"]["covered_cells"], r["f"]["bodies_in_table"]] for r in runs],
+               [r["porosity"] for r in runs])
+    xb = nnls([[1.0, r["f"]["coupler_bytes_per_step"]] for r in runs],
+              [r["exchange"] for r in runs])
+    dem = nnls([[1.0, (r["d"]["atoms"] + r["d"]["ghost_atoms"]) * r["substeps"]] for r in runs],
                [r["dem"] for r in runs])
-    m = Model({"cell": lat[0], "covered": lat[1], "band": por[0], "interior": por[1],
-               "body": por[2], "coupler_byte": xb[0], "atom_substep": dem[0]})
+    m = Model({"cell": lat[0], "covered": lat[1], "porosity_cell": por[0], "body": por[1], "exchange_step": xb[0], "coupler_byte": xb[1],
+               "dem_step": dem[0], "atom_substep": dem[1]})
     rows, rhs = [], []
     for ranks, busy in halo_runs:
         for f, b in zip(ranks, busy):

@@ -23,8 +23,9 @@ class Fit(unittest.TestCase):
         self.assertAlmostEqual(x[0], 2.0)  # b's projection on the first column
 
     def test_fit_costs_on_synthetic_runs(self):
-        truth = {"cell": 2e-8, "covered": 1e-7, "band": 3e-7, "interior": 5e-8, "body": 2e-5,
-                 "coupler_byte": 1e-9, "atom_substep": 4e-8, "halo_byte": 2e-9}
+        truth = {"cell": 2e-8, "covered": 1e-7, "porosity_cell": 3e-7, "body": 2e-5,
+                 "coupler_byte": 1e-9, "atom_substep": 4e-8, "halo_byte": 2e-9,
+                 "exchange_step": 1e-4, "dem_step": 5e-4}
         m = scaling.Model(truth)
         runs = []
         for cells, band, inside, bodies in ((195112, 40000, 24000, 64), (195112, 5000, 3000, 8),
@@ -35,7 +36,7 @@ class Fit(unittest.TestCase):
             d = {"atoms": 27 * bodies, "ghost_atoms": 10 * bodies}
             runs.append({"f": f, "d": d, "substeps": 5,
                          "lattice": truth["cell"] * cells + truth["covered"] * (band + inside),
-                         "porosity": truth["band"] * band + truth["interior"] * inside
+                         "porosity": truth["porosity_cell"] * (band + inside)
                          + truth["body"] * bodies, "exchange": m.exchange(f),
                          "dem": m.dem_busy(d, 5)})
         two = [dict(runs[1]["f"], cells=97556, halo_bytes_per_step=b) for b in (135000, 140000)]
