@@ -34,14 +34,15 @@ from lbdem.rundir import Run  # noqa: E402
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BASE = os.path.join(ROOT, "configs", "bench", "cubes64_c27.yaml")
 SHAPES = os.path.join(ROOT, "configs", "shapes")
-PAPER = {n: os.path.join(ROOT, "configs", "study", f"paper_{n}.yaml") for n in (3150, 10648, 103823)}
+PAPER = {n: os.path.join(ROOT, "configs", "study", f"paper_{n}.yaml")
+         for n in (3150, 10648, 103823)}
 CORES = (16, 64, 256, 1024)
 GLOBAL_BODY_BYTES = 160  # per body on every DEM rank: scene table 120 B + mass, offset 40 B
 CLUMP_SPHERES = 27
 
 
-def base_scene():
-    s = io.read_scene_yaml(BASE)
+def base_scene(path=BASE):
+    s = io.read_scene_yaml(path)
     s["shapes"][0]["clump"]["file"] = os.path.join(SHAPES, "cube_27_surface.clump")
     s["dem"]["output"] = {"directory": "."}
     return s
@@ -127,12 +128,19 @@ def point(fs, ds, wall):
         n = len(pr["busy_s_per_step"]["values"])
         return [{k: v["values"][i] for k, v in pr.items()} for i in range(n)]
     fp, dp = fs["per_step_s"], ds["per_step_s"]
+    fc, dc = fs["per_step_cpu_s"], ds["per_step_cpu_s"]
     dem_part = [k for k in dp if k not in ("exchange", "idle")][0]
-    return {"fluid": ranks(fs), "dem": ranks(ds), "wall": wall,
+    fl, dm = ranks(fs), ranks(ds)
+    # The step on cores of their own: each side's busy CPU time and exchange, the longer side.
+    cpu_step = max(max(r["busy_cpu_s_per_step"] for r in fl) + fp["exchange"],
+                   max(r["busy_cpu_s_per_step"] for r in dm) + dp["exchange"])
+    return {"fluid": fl, "dem": dm, "wall": wall,
             "steps": fs["steps"]["last"] - fs["steps"]["first"],
             "lattice": fp["lattice"], "porosity": fp["porosity + momentum exchange"],
-            "exchange": fp["exchange"], "idle": fp["idle"],
-            "step": sum(fp.values()), "dem_s": dp[dem_part], "dem_exchange": dp["exchange"],
+            "lattice_cpu": fc["lattice"], "porosity_cpu": fc["porosity + momentum exchange"],
+            "exchange": fp["exchange"], "idle": fp["idle"], "cpu_step": cpu_step,
+            "step": sum(fp.values()), "dem_s": dp[dem_part], "dem_cpu": dc[dem_part],
+            "dem_exchange": dp["exchange"],
             "imbalance": fs["load_imbalance"]["max_over_mean"],
             "work_imbalance": max_over_mean([r["weighted_work"] for r in ranks(fs)])}
 
@@ -151,10 +159,10 @@ def substeps_of(args, name):
 
 
 # ---- counters table ---------------------------------------------------------------------------
-FLUID_COLS = ("cells", "covered_cells", "band_cells", "body_interior_cells", "bodies_in_table",
-              "bodies_touching", "halo_bytes_per_step", "halo_messages_per_step",
-              "coupler_bytes_per_step", "coupler_messages_per_step", "max_rss_mib")
-DEM_COLS = ("bodies_owned", "atoms", "ghost_atoms", "coupler_bytes_per_step",
+FLUID_COLS = ("busy_cpu_s_per_step", "cells", "covered_cells", "band_cells",
+              "body_interior_cells", "bodies_in_table", "bodies_touching", "halo_bytes_per_step",
+              "halo_messages_per_step", "coupler_bytes_per_step", "coupler_messages_per_step", "max_rss_mib")
+DEM_COLS = ("busy_cpu_s_per_step", "bodies_owned", "atoms", "ghost_atoms", "coupler_bytes_per_step",
             "coupler_messages_per_step", "load_bytes_per_step", "max_rss_mib")
 
 
@@ -170,8 +178,8 @@ def print_counters(label, p):
 
 # ---- fit and check ----------------------------------------------------------------------------
 def fit_row(args, name, p):
-    return {"f": p["fluid"][0], "d": p["dem"][0], "lattice": p["lattice"],
-            "porosity": p["porosity"], "exchange": p["exchange"], "dem": p["dem_s"],
+    return {"f": p["fluid"][0], "d": p["dem"][0], "lattice": p["lattice_cpu"],
+            "porosity": p["porosity_cpu"], "exchange": p["exchange"], "dem": p["dem_cpu"],
             "substeps": substeps_of(args, name)}
 
 
@@ -185,7 +193,8 @@ def fit(args):
         rows.append(fit_row(args, name, points[name]))
     points["fit_dilute_2"] = launch(args, "fit_dilute_2", thinned(base), 2, 1)
     p2 = points["fit_dilute_2"]
-    model = scaling.fit_costs(rows, [(p2["fluid"], [r["busy_s_per_step"] for r in p2["fluid"]])])
+    model = scaling.fit_costs(rows, [(p2["fluid"],
+                                      [r["busy_cpu_s_per_step"] for r in p2["fluid"]])])
     # The check: points the fit did not use, at 1 and 2 fluid ranks.
     checks = [("check_weak_1", base, 1), ("check_weak_2", repeated(base, (2, 1, 1)), 2),
               ("check_strong_2", base, 2)]
@@ -219,11 +228,12 @@ def fit(args):
         print(f"  {names[k]:<56} {v * 1e9:12.3f} ns")
     for k, v in model.memory.items():
         print(f"  memory {k:<49} {v:12.1f} {'B' if 'base' not in k else 'B (per rank)'}")
-    print("# check: time per coupled step (fluid rank 0's parts summed), measured against the "
-          "model's max(fluid, DEM) (cores of their own) and fluid + DEM (shared cores); the "
-          "busiest fluid rank's busy time, predicted and measured")
-    print(f"  {'run':<16} {'ranks':>5} {'measured ms':>11} {'max(F,D)':>9} {'F + D':>8} | "
-          f"{'busy pred ms':>12} {'busy meas ms':>12}")
+    print("# check, ms per coupled step: measured wall (fluid rank 0's parts summed, shared "
+          "cores), measured on cores of their own (max over the sides of the busiest rank's CPU "
+          "time + exchange) against the model's max(fluid, DEM); busiest fluid rank's busy CPU "
+          "time, measured and predicted")
+    print(f"  {'run':<16} {'ranks':>5} {'wall':>9} {'own cores':>9} {'model':>9} {'ratio':>6} | "
+          f"{'busy CPU':>9} {'model':>9} {'ratio':>6}")
     for name, p in points.items():
         check_line(model, name, p, substeps_of(args, name))
     return model
@@ -235,12 +245,12 @@ def len_bodies(args, name):
 
 
 def check_line(model, name, p, substeps):
-    pred, f, d = model.step(p["fluid"], p["dem"], substeps)
-    busy = max(r["busy_s_per_step"] for r in p["fluid"])
-    print(f"  {name:<16} {len(p['fluid'])}:{len(p['dem']):<3} {1e3 * p['step']:11.2f} "
-          f"{1e3 * pred:9.2f} {1e3 * (f + d):8.2f} | "
-          f"{1e3 * max(model.fluid_busy(r) for r in p['fluid']):12.2f} {1e3 * busy:12.2f}",
-          flush=True)
+    pred = model.step(p["fluid"], p["dem"], substeps)[0]
+    busy = max(r["busy_cpu_s_per_step"] for r in p["fluid"])
+    busy_pred = max(model.fluid_busy(r) for r in p["fluid"])
+    print(f"  {name:<16} {len(p['fluid'])}:{len(p['dem']):<3} {1e3 * p['step']:9.2f} "
+          f"{1e3 * p['cpu_step']:9.2f} {1e3 * pred:9.2f} {pred / p['cpu_step']:6.2f} | "
+          f"{1e3 * busy:9.2f} {1e3 * busy_pred:9.2f} {busy_pred / busy:6.2f}", flush=True)
 
 
 def load_model(args):
@@ -265,27 +275,36 @@ def weak_k(p):
 
 
 def series(args, kind, ranks, model):
-    base = with_steps(base_scene(), args.steps)
-    print(f"# {kind} scaling on {os.path.relpath(BASE, ROOT)} (27-sphere clump), {args.steps} "
-          f"steps, one DEM rank per {args.dem_per_fluid} fluid ranks")
-    print(f"  {'fluid:dem':>9} {'decomp':>8} {'cells':>10} {'bodies':>6} {'ms/step':>8} "
-          f"{'pred':>8} {'MLUPS':>7} {'eff':>5} {'imb busy':>8} {'imb work':>8}")
+    path = BASE if kind == "weak" else os.path.join(ROOT, "configs", "bench", args.scene + ".yaml")
+    base = with_steps(base_scene(path), args.steps)
+    tag = "" if path == BASE else "_" + args.scene
+    print(f"# {kind} scaling on {os.path.relpath(path, ROOT)}, {args.steps} "
+          f"steps, one DEM rank per {args.dem_per_fluid} fluid ranks, load average "
+          f"{os.getloadavg()[0]:.1f}. ms per step: wall (shared cores), on cores of their own "
+          "(busiest rank's CPU time + exchange, the longer side) and the model's; MLUPS and "
+          "efficiency on cores of their own (weak t1 / tP, strong t1 / (P tP)); imbalance: max / "
+          "mean over the fluid ranks of the busy CPU time and of the weighted work")
+    print(f"  {'fluid:dem':>9} {'decomp':>8} {'cells':>10} {'bodies':>6} {'wall':>8} "
+          f"{'own':>8} {'model':>8} {'MLUPS':>7} {'eff':>5} {'imb CPU':>8} {'imb work':>8}")
     first = None
     results = []
     for p in ranks:
         scene = repeated(base, weak_k(p)) if kind == "weak" else base
         dem = max(1, p // args.dem_per_fluid)
         for decomp in ("regular", "balanced"):
-            name = f"{kind}_{p}_{decomp}"
+            name = f"{kind}{tag}_{p}_{decomp}"
             r = launch(args, name, with_steps(scene, args.steps, decomp), p, dem)
             cells = math.prod(cells_of(scene))
             pred = model.step(r["fluid"], r["dem"], substeps_of(args, name))[0] if model else 0
+            t = r["cpu_step"]
             if first is None:
-                first = r["step"]
-            eff = first / r["step"] if kind == "weak" else first / (p * r["step"])
+                first = t
+            eff = first / t if kind == "weak" else first / (p * t)
+            imb = max_over_mean([x["busy_cpu_s_per_step"] for x in r["fluid"]])
             print(f"  {p:>5}:{dem:<3} {decomp:>8} {cells:>10} {len(scene['bodies']):>6} "
-                  f"{1e3 * r['step']:8.2f} {1e3 * pred:8.2f} {cells / r['step'] / 1e6:7.2f} "
-                  f"{eff:5.2f} {r['imbalance']:8.3f} {r['work_imbalance']:8.3f}", flush=True)
+                  f"{1e3 * r['step']:8.2f} {1e3 * t:8.2f} {1e3 * pred:8.2f} "
+                  f"{cells / t / 1e6:7.2f} {eff:5.2f} {imb:8.3f} {r['work_imbalance']:8.3f}",
+                  flush=True)
             print_counters(f"{name}:", r)
             results.append((name, r))
     return results
@@ -350,8 +369,13 @@ def predict(args, model, saved):
 
 def paper_run(args, model):
     from lbdem import packing, study
-    n = int(study.load_study(args.paper)["bodies"])
-    st = study.Study(study.load_study(args.paper), args.build, out=args.out)
+    config = study.load_study(args.paper)
+    n = int(config["bodies"])
+    # --coarsen K: the fluid at 1/K of the resolution, the bodies and the DEM as they are (the
+    # DEM's set-up and memory at full size where the lattice would not fit).
+    fluid = config["fluid"]
+    fluid["cells_per_diameter"] = float(fluid["cells_per_diameter"]) / args.coarsen
+    st = study.Study(config, args.build, out=args.out)
     x, q = io.read_bodies_csv(args.packing)
     base = packing.Packing(len(x), packing.PHI_START, st.d)
     base.x, base.q = x, q
@@ -359,7 +383,8 @@ def paper_run(args, model):
     del scene["fluid"]["output"]  # no fields or series: the run measures the step
     scene["time"] = {"end": args.steps * st.dt, "progress_interval": 1.0e9}
     scene["coupling"] = {"output_interval": args.steps * st.dt}
-    name = f"paper_{n}_{args.ranks[0]}x{args.ranks[1]}"
+    name = f"paper_{n}_{args.ranks[0]}x{args.ranks[1]}" + (
+        f"_coarse{args.coarsen}" if args.coarsen != 1 else "")
     folder = os.path.join(args.out, name)
     os.makedirs(folder, exist_ok=True)
     p.save(os.path.join(folder, "bodies.csv"), packing.PHI_START)
@@ -379,10 +404,13 @@ def paper_run(args, model):
     print(f"# {name}: {cells[0]}^3 = {math.prod(cells)} cells, {n} cubes, {r['steps']} steps, "
           f"{sub} DEM substeps per step, wall {r['wall']:.0f} s, load average "
           f"{os.getloadavg()[0]:.1f}")
-    print(f"  time per step {1e3 * r['step']:.1f} ms (lattice {1e3 * r['lattice']:.1f}, porosity "
-          f"+ momentum exchange {1e3 * r['porosity']:.1f}, exchange {1e3 * r['exchange']:.1f}, "
-          f"idle {1e3 * r['idle']:.1f}; DEM {1e3 * r['dem']:.1f}), "
-          f"{math.prod(cells) / r['step'] / 1e6:.2f} MLUPS")
+    print(f"  time per step {1e3 * r['step']:.1f} ms wall (lattice {1e3 * r['lattice']:.1f}, "
+          f"porosity + momentum exchange {1e3 * r['porosity']:.1f}, exchange "
+          f"{1e3 * r['exchange']:.1f}, idle {1e3 * r['idle']:.1f}; DEM {1e3 * r['dem_s']:.1f}), "
+          f"{math.prod(cells) / r['step'] / 1e6:.2f} MLUPS; CPU of fluid rank 0: lattice "
+          f"{1e3 * r['lattice_cpu']:.1f}, porosity + momentum exchange "
+          f"{1e3 * r['porosity_cpu']:.1f}; DEM {1e3 * r['dem_cpu']:.1f}; on cores of their own "
+          f"{1e3 * r['cpu_step']:.1f} ms, {math.prod(cells) / r['cpu_step'] / 1e6:.2f} MLUPS")
     print_counters(name + ":", r)
     if model:
         check_line(model, name, r, sub)
@@ -475,10 +503,14 @@ def main():
     ap.add_argument("--weak", type=int, nargs="*")
     ap.add_argument("--strong", type=int, nargs="*")
     ap.add_argument("--dem-per-fluid", type=int, default=4)
+    ap.add_argument("--scene", default="cubes64_c27",
+                    help="configs/bench scene of the strong series (bed64_c27: a settled bed)")
     ap.add_argument("--predict", action="store_true")
     ap.add_argument("--paper", help="a study file (configs/study/paper_*.yaml) to run here")
     ap.add_argument("--packing", help="its phi = 0.4 packing (tools/make_packing.py)")
     ap.add_argument("--ranks", type=int, nargs=2, default=[2, 1], metavar=("FLUID", "DEM"))
+    ap.add_argument("--coarsen", type=int, default=1,
+                    help="with --paper: the fluid's dx times this (the DEM at full size)")
     ap.add_argument("--check-only", action="store_true",
                     help="with --paper: both programs' --check of the scene, with max RSS")
     args = ap.parse_args()

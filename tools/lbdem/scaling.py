@@ -201,7 +201,8 @@ def fit_costs(runs, halo_runs=()):
               [r["exchange"] for r in runs])
     dem = nnls([[1.0, (r["d"]["atoms"] + r["d"]["ghost_atoms"]) * r["substeps"]] for r in runs],
                [r["dem"] for r in runs])
-    m = Model({"cell": lat[0], "covered": lat[1], "porosity_cell": por[0], "body": por[1], "exchange_step": xb[0], "coupler_byte": xb[1],
+    m = Model({"cell": lat[0], "covered": lat[1], "porosity_cell": por[0], "body": por[1],
+               "exchange_step": xb[0], "coupler_byte": xb[1],
                "dem_step": dem[0], "atom_substep": dem[1]})
     rows, rhs = [], []
     for ranks, busy in halo_runs:

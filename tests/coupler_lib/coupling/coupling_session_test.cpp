@@ -107,9 +107,9 @@ TEST_F(Alone, WritesTheRunSummaryWithCountersAndTheSplit) {
   for (const char* want :
        {"\"end\": \"completed\"", "\"steps\": {\"first\": 0, \"last\": 6, \"schedule\": 6}",
         "\"cells\": {\"values\": [4096]", "\"bodies\": {\"values\": [5]", "\"max_rss_mib\"",
-        "\"coupler_bytes_per_step\": {\"values\": [100]",
-        "\"coupler_messages_per_step\": {\"values\": [2]", "\"lattice\": ", "\"idle\": 0",
-        "\"outputs\": [\"out/trace.csv\"]", "\"max_over_mean\": 1"})
+        "\"coupler_bytes_per_step\": {\"values\": [100]", "\"busy_cpu_s_per_step\"",
+        "\"per_step_cpu_s\": {\"lattice\": ", "\"coupler_messages_per_step\": {\"values\": [2]",
+        "\"lattice\": ", "\"idle\": 0", "\"outputs\": [\"out/trace.csv\"]", "\"max_over_mean\": 1"})
     EXPECT_NE(json.find(want), std::string::npos) << want << "\n" << json;
 }
 
