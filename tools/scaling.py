@@ -161,7 +161,8 @@ def substeps_of(args, name):
 # ---- counters table ---------------------------------------------------------------------------
 FLUID_COLS = ("busy_cpu_s_per_step", "cells", "covered_cells", "band_cells",
               "body_interior_cells", "bodies_in_table", "bodies_touching", "halo_bytes_per_step",
-              "halo_messages_per_step", "coupler_bytes_per_step", "coupler_messages_per_step", "max_rss_mib")
+              "halo_messages_per_step", "coupler_bytes_per_step", "coupler_messages_per_step",
+              "max_rss_mib")
 DEM_COLS = ("busy_cpu_s_per_step", "bodies_owned", "atoms", "ghost_atoms", "coupler_bytes_per_step",
             "coupler_messages_per_step", "load_bytes_per_step", "max_rss_mib")
 
