@@ -2,7 +2,6 @@
 
 #include <spdlog/spdlog.h>
 #include <sys/resource.h>
-#include <time.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -48,12 +47,6 @@ double max_rss_mib() {
 }
 
 }  // namespace
-
-double thread_cpu_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-}
 
 CouplingSession::CouplingSession(const SideInfo& side, const Scene& scene, const Schedule& schedule,
                                  const World* world)
@@ -208,9 +201,14 @@ void CouplingSession::report_work(const CouplingTimes& coupler) {
     busy += p.seconds;
     busy_cpu += p.cpu_seconds;
   }
-  std::vector<std::string> names{"busy_s_per_step", "busy_cpu_s_per_step", "max_rss_mib",
+  std::vector<std::string> names{"busy_s_per_step",        "busy_cpu_s_per_step",
+                                 "coupler_cpu_s_per_step", "max_rss_mib",
                                  "coupler_bytes_per_step", "coupler_messages_per_step"};
-  std::vector<double> mine{busy / n, busy_cpu / n, max_rss_mib(), double(coupler.bytes) / n,
+  std::vector<double> mine{busy / n,
+                           busy_cpu / n,
+                           coupler.cpu_s / n,
+                           max_rss_mib(),
+                           double(coupler.bytes) / n,
                            double(coupler.messages) / n};
   for (const Counter& c : counters_) {
     names.push_back(c.name);
@@ -253,6 +251,7 @@ void CouplingSession::report_work(const CouplingTimes& coupler) {
     s.per_step_s.emplace_back(p.name, p.seconds / n);
     s.per_step_cpu_s.emplace_back(p.name, p.cpu_seconds / n);
   }
+  s.per_step_cpu_s.emplace_back("exchange", coupler.cpu_s / n);
   s.per_step_s.emplace_back("exchange", coupler.exchange_s() / n);
   s.per_step_s.emplace_back("idle", coupler.idle_s / n);
   s.ranks = std::move(table);

@@ -42,9 +42,6 @@
 
 namespace lbdem {
 
-// CPU seconds this thread has used (CLOCK_THREAD_CPUTIME_ID).
-double thread_cpu_seconds();
-
 // Why a coupled run ended.
 enum class SessionEnd {
   running,         // not ended yet
