@@ -128,15 +128,17 @@ def point(fs, ds, wall):
         n = len(pr["busy_s_per_step"]["values"])
         return [{k: v["values"][i] for k, v in pr.items()} for i in range(n)]
     fp, dp = fs["per_step_s"], ds["per_step_s"]
-    fc, dc = fs["per_step_cpu_s"], ds["per_step_cpu_s"]
+    # Summaries without CPU times (older programs) give their wall times instead.
+    fc, dc = fs.get("per_step_cpu_s", fp), ds.get("per_step_cpu_s", dp)
     dem_part = [k for k in dp if k not in ("exchange", "idle")][0]
     fl, dm = ranks(fs), ranks(ds)
     # The step on cores of their own: each side's busy and coupler CPU time, the longer side
     # (a run without the coupler's CPU time takes its wall time).
     def own(r, side):
-        return r["busy_cpu_s_per_step"] + r.get("coupler_cpu_s_per_step", side["exchange"])
+        return (r.get("busy_cpu_s_per_step", r["busy_s_per_step"])
+                + r.get("coupler_cpu_s_per_step", side["exchange"]))
     cpu_step = max(max(own(r, fp) for r in fl), max(own(r, dp) for r in dm))
-    return {"fluid": fl, "dem": dm, "wall": wall,
+    return {"fluid": fl, "dem": dm, "wall": wall, "has_cpu": "per_step_cpu_s" in fs,
             "steps": fs["steps"]["last"] - fs["steps"]["first"],
             "lattice": fp["lattice"], "porosity": fp["porosity + momentum exchange"],
             "lattice_cpu": fc["lattice"], "porosity_cpu": fc["porosity + momentum exchange"],
@@ -176,6 +178,8 @@ def print_counters(label, p):
         rows = p[side]
         cells = []
         for c in cols:
+            if c not in rows[0]:
+                continue  # a summary of an older program
             v = [r[c] for r in rows]
             cells.append(f"{c} {min(v):.6g}..{max(v):.6g}" if len(v) > 1 else f"{c} {v[0]:.6g}")
         print(f"  {label} {side} ({len(rows)} ranks): " + ", ".join(cells))
@@ -251,7 +255,7 @@ def len_bodies(args, name):
 
 def check_line(model, name, p, substeps):
     pred = model.step(p["fluid"], p["dem"], substeps)[0]
-    busy = max(r["busy_cpu_s_per_step"] for r in p["fluid"])
+    busy = max(r.get("busy_cpu_s_per_step", r["busy_s_per_step"]) for r in p["fluid"])
     busy_pred = max(model.fluid_busy(r) for r in p["fluid"])
     print(f"  {name:<16} {len(p['fluid'])}:{len(p['dem']):<3} {1e3 * p['step']:9.2f} "
           f"{1e3 * p['cpu_step']:9.2f} {1e3 * pred:9.2f} {pred / p['cpu_step']:6.2f} | "
@@ -327,7 +331,34 @@ def paper_system(n):
     return st, cells
 
 
+def memory_points(args):
+    """(fluid rank counters, RSS bytes) and (DEM rank counters, bodies, RSS bytes) of every run
+    under <out> (the fit's, the series', the paper systems')."""
+    import glob
+    fluid, dem = [], []
+    for path in sorted(glob.glob(os.path.join(args.out, "*", "*_fluid_summary.json"))):
+        other = path.replace("_fluid_summary.json", "_dem_summary.json")
+        if not os.path.exists(other):
+            continue
+        with open(path) as f, open(other) as g:
+            p = point(json.load(f), json.load(g), 0.0)
+        if "cells_with_ghosts" not in p["fluid"][0]:
+            continue
+        bodies = sum(r["bodies_owned"] for r in p["dem"])
+        fluid += [(r, r["max_rss_mib"] * 2**20) for r in p["fluid"]]
+        dem += [(r, bodies, r["max_rss_mib"] * 2**20) for r in p["dem"]]
+    return fluid, dem
+
+
 def predict(args, model, saved):
+    fluid, dem = memory_points(args)
+    model.memory = scaling.fit_memory(fluid, dem, GLOBAL_BODY_BYTES)
+    print(f"# memory per rank refitted on the {len(fluid)} fluid and {len(dem)} DEM ranks of the "
+          f"runs in {args.out}: fluid {model.memory['fluid_base'] / 2**20:.1f} MiB + "
+          f"{model.memory['fluid_cell']:.1f} B per cell (with the ghost layer); DEM "
+          f"{model.memory['dem_base'] / 2**20:.1f} MiB + {GLOBAL_BODY_BYTES} B per body (global) + "
+          f"{model.memory['dem_atom']:.1f} B per local or ghost atom")
+
     print("# model predictions for the paper's systems (cube suspension at phi = 0.3, 27-sphere "
           "clumps, double precision); best split of the cores between fluid and DEM ranks; "
           "memory per rank from the fitted per-cell and per-atom sizes")
@@ -413,10 +444,12 @@ def paper_run(args, model):
     print(f"  time per step {1e3 * r['step']:.1f} ms wall (lattice {1e3 * r['lattice']:.1f}, "
           f"porosity + momentum exchange {1e3 * r['porosity']:.1f}, exchange "
           f"{1e3 * r['exchange']:.1f}, idle {1e3 * r['idle']:.1f}; DEM {1e3 * r['dem_s']:.1f}), "
-          f"{math.prod(cells) / r['step'] / 1e6:.2f} MLUPS; CPU of fluid rank 0: lattice "
-          f"{1e3 * r['lattice_cpu']:.1f}, porosity + momentum exchange "
-          f"{1e3 * r['porosity_cpu']:.1f}; DEM {1e3 * r['dem_cpu']:.1f}; on cores of their own "
-          f"{1e3 * r['cpu_step']:.1f} ms, {math.prod(cells) / r['cpu_step'] / 1e6:.2f} MLUPS")
+          f"{math.prod(cells) / r['step'] / 1e6:.2f} MLUPS")
+    if r["has_cpu"]:
+        print(f"  CPU of fluid rank 0: lattice {1e3 * r['lattice_cpu']:.1f}, porosity + momentum "
+              f"exchange {1e3 * r['porosity_cpu']:.1f}; DEM {1e3 * r['dem_cpu']:.1f}; on cores "
+              f"of their own {1e3 * r['cpu_step']:.1f} ms, "
+              f"{math.prod(cells) / r['cpu_step'] / 1e6:.2f} MLUPS")
     print_counters(name + ":", r)
     if model:
         check_line(model, name, r, sub)
