@@ -419,7 +419,9 @@ def paper_run(args, model):
     scene, cells, p = st.suspension_scene("cube", 0.3, base)
     del scene["fluid"]["output"]  # no fields or series: the run measures the step
     scene["time"] = {"end": args.steps * st.dt, "progress_interval": 1.0e9}
-    scene["coupling"] = {"output_interval": args.steps * st.dt}
+    # Niced on shared cores a step of the larger systems takes minutes of wall time: no stall
+    # limit of a minute.
+    scene["coupling"] = {"output_interval": args.steps * st.dt, "stall_timeout": 3600}
     name = f"paper_{n}_{args.ranks[0]}x{args.ranks[1]}" + (
         f"_coarse{args.coarsen}" if args.coarsen != 1 else "")
     folder = os.path.join(args.out, name)
@@ -436,7 +438,7 @@ def paper_run(args, model):
             rss = [ln for ln in text.splitlines() if "Maximum resident" in ln]
             print(f"# {name} {prog} --check: {time.monotonic() - t0:.1f} s, {rss[0].strip()}")
         return
-    r = launch(args, name, scene, args.ranks[0], args.ranks[1], nice=10)
+    r = launch(args, name, scene, args.ranks[0], args.ranks[1], nice=args.nice)
     sub = substeps_of(args, name)
     print(f"# {name}: {cells[0]}^3 = {math.prod(cells)} cells, {n} cubes, {r['steps']} steps, "
           f"{sub} DEM substeps per step, wall {r['wall']:.0f} s, load average "
@@ -548,6 +550,7 @@ def main():
     ap.add_argument("--paper", help="a study file (configs/study/paper_*.yaml) to run here")
     ap.add_argument("--packing", help="its phi = 0.4 packing (tools/make_packing.py)")
     ap.add_argument("--ranks", type=int, nargs=2, default=[2, 1], metavar=("FLUID", "DEM"))
+    ap.add_argument("--nice", type=int, default=10, help="with --paper: its niceness")
     ap.add_argument("--coarsen", type=int, default=1,
                     help="with --paper: the fluid's dx times this (the DEM at full size)")
     ap.add_argument("--check-only", action="store_true",
