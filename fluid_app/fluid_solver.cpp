@@ -300,6 +300,11 @@ const LocalBox& FluidSolver<T>::box() const {
 }
 
 template <class T>
+const HaloTraffic& FluidSolver<T>::halo_traffic() const {
+  return impl_->halo.traffic();
+}
+
+template <class T>
 const Decomposition& FluidSolver<T>::decomposition() const {
   return impl_->dec;
 }

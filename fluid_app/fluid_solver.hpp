@@ -20,6 +20,7 @@
 #include "coupler_lib/scene/fluid_section.hpp"
 #include "fluid_app/lattice/local_box.hpp"
 #include "fluid_app/parallel/decomposition.hpp"
+#include "fluid_app/parallel/halo_exchange.hpp"
 #include "fluid_app/porous_field.hpp"
 
 namespace lbdem {
@@ -64,6 +65,8 @@ class FluidSolver {
   const LocalBox& box() const;
   const Decomposition& decomposition() const;
   MPI_Comm comm() const;  // the Cartesian communicator (same ranks as the one given)
+  // What this rank sent to its neighbours in the halo exchanges so far (one per step).
+  const HaloTraffic& halo_traffic() const;
 
   // --- State after the last step (post-stream, pre-collision), any AA parity. ---
   // Population i at a local cell. Valid for every interior cell, and for a ghost cell for

@@ -130,12 +130,14 @@ CouplingSession::Part& CouplingSession::part(const std::string& name) {
   auto it =
       std::find_if(parts_.begin(), parts_.end(), [&](const Part& p) { return p.name == name; });
   if (it != parts_.end()) return *it;
-  parts_.push_back(Part{name, {}, 0});
+  parts_.push_back(Part{name, {}, 0, 0});
   return parts_.back();
 }
 
-void CouplingSession::add_time(const std::string& name, double seconds) {
-  part(name).seconds += seconds;
+void CouplingSession::add_time(const std::string& name, double seconds, double cpu_seconds) {
+  Part& p = part(name);
+  p.seconds += seconds;
+  p.cpu_seconds += cpu_seconds;
 }
 
 void CouplingSession::count(const std::string& name, double value) {
@@ -194,10 +196,20 @@ int CouplingSession::finish(const CouplingTimes& coupler) {
 
 void CouplingSession::report_work(const CouplingTimes& coupler) {
   const double n = double(std::max<std::int64_t>(step_ - first_, 1));
-  double busy = 0;
-  for (const Part& p : parts_) busy += p.seconds;
-  std::vector<std::string> names{"busy_s_per_step", "max_rss_mib"};
-  std::vector<double> mine{busy / n, max_rss_mib()};
+  double busy = 0, busy_cpu = 0;
+  for (const Part& p : parts_) {
+    busy += p.seconds;
+    busy_cpu += p.cpu_seconds;
+  }
+  std::vector<std::string> names{"busy_s_per_step",        "busy_cpu_s_per_step",
+                                 "coupler_cpu_s_per_step", "max_rss_mib",
+                                 "coupler_bytes_per_step", "coupler_messages_per_step"};
+  std::vector<double> mine{busy / n,
+                           busy_cpu / n,
+                           coupler.cpu_s / n,
+                           max_rss_mib(),
+                           double(coupler.bytes) / n,
+                           double(coupler.messages) / n};
   for (const Counter& c : counters_) {
     names.push_back(c.name);
     mine.push_back(c.value);
@@ -235,7 +247,11 @@ void CouplingSession::report_work(const CouplingTimes& coupler) {
   s.exit_status = end_ == SessionEnd::unstable ? kExitUnstable : 0;
   s.last_checkpoint = remembered_checkpoint();
   s.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
-  for (const Part& p : parts_) s.per_step_s.emplace_back(p.name, p.seconds / n);
+  for (const Part& p : parts_) {
+    s.per_step_s.emplace_back(p.name, p.seconds / n);
+    s.per_step_cpu_s.emplace_back(p.name, p.cpu_seconds / n);
+  }
+  s.per_step_cpu_s.emplace_back("exchange", coupler.cpu_s / n);
   s.per_step_s.emplace_back("exchange", coupler.exchange_s() / n);
   s.per_step_s.emplace_back("idle", coupler.idle_s / n);
   s.ranks = std::move(table);

@@ -91,7 +91,9 @@ class CouplingSession {
   // Collective over both programs at agreement steps.
   void advance(int flags, const std::function<void()>& accept = {});
 
-  // Adds the wall time of `f` to the named part of this program's step (end-of-run split).
+  // Adds the wall time of `f` to the named part of this program's step (end-of-run split), and
+  // the CPU time of this thread in it (what the part costs on a core of its own: on shared
+  // cores the wall time also holds the time other processes ran).
   template <class F>
   decltype(auto) timed(const char* part, F&& f) {
     const auto start = std::chrono::steady_clock::now();
@@ -99,14 +101,16 @@ class CouplingSession {
       CouplingSession* s;
       const char* part;
       std::chrono::steady_clock::time_point start;
+      double cpu_start;
       ~Add() {
-        s->add_time(
-            part, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        s->add_time(part,
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                    thread_cpu_seconds() - cpu_start);
       }
-    } add{this, part, start};
+    } add{this, part, start, thread_cpu_seconds()};
     return f();
   }
-  void add_time(const std::string& part, double seconds);
+  void add_time(const std::string& part, double seconds, double cpu_seconds = 0);
   // A note printed after the part's time in the split, e.g. "2 substeps".
   void describe(const std::string& part, const std::string& note);
 
@@ -159,6 +163,7 @@ class CouplingSession {
   struct Part {
     std::string name, note;
     double seconds = 0;
+    double cpu_seconds = 0;
   };
   Part& part(const std::string& name);
   std::vector<Part> parts_;  // in the order first timed

@@ -65,6 +65,7 @@ void DemCoupler::send_states(std::int64_t step, std::span<const BodyState> owned
     for (int r : touched_ranks(layout_, s.x, layout_.reach(s.shape)))
       buckets[static_cast<size_t>(r)].push_back(s);
   }
+  count_traffic(times_, buckets);
   transport_->send_states(step, sent_, buckets);
   if (recorder_) recorder_->states(step, sent_);
   if (journal_) journal_->states(step, sent_);
@@ -80,7 +81,9 @@ std::vector<BodyLoad> DemCoupler::receive_loads(std::int64_t step) {
                              "by exactly one receive_loads (last sent: step " +
                              std::to_string(step_) + ")");
   answered_ = true;
-  std::vector<BodyLoad> loads = reduce_loads(sent_, transport_->receive_loads(step), step);
+  const auto partials = transport_->receive_loads(step);
+  count_traffic(times_, partials);
+  std::vector<BodyLoad> loads = reduce_loads(sent_, partials, step);
   if (recorder_) recorder_->loads(step, loads);
   if (journal_) journal_->loads(step, loads);
   return loads;

@@ -57,6 +57,7 @@ FluidCoupler::~FluidCoupler() = default;
 std::vector<BodyState> FluidCoupler::receive_states(std::int64_t step) {
   const ScopedCouplingTimer timer(times_);
   const auto per_dem = transport_->receive_states(step);
+  count_traffic(times_, per_dem);
   source_.clear();
   std::vector<BodyState> out;
   for (size_t src = 0; src < per_dem.size(); ++src) {
@@ -109,6 +110,7 @@ void FluidCoupler::send_loads(std::int64_t step, std::span<const BodyLoad> parti
     l.step = step;
     buckets[static_cast<size_t>(it->second)].push_back(l);
   }
+  count_traffic(times_, buckets);
   transport_->send_loads(step, buckets);
 }
 

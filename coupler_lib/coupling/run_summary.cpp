@@ -64,6 +64,11 @@ std::string run_summary_json(const RunSummary& s) {
     o << (i ? ", " : "") << json_string(s.per_step_s[i].first) << ": "
       << json_number(s.per_step_s[i].second);
   o << "},\n";
+  o << "  \"per_step_cpu_s\": {";
+  for (std::size_t i = 0; i < s.per_step_cpu_s.size(); ++i)
+    o << (i ? ", " : "") << json_string(s.per_step_cpu_s[i].first) << ": "
+      << json_number(s.per_step_cpu_s[i].second);
+  o << "},\n";
   o << "  \"per_rank\": {";
   for (std::size_t c = 0; c < s.ranks.names.size(); ++c) {
     const auto& v = s.ranks.per_rank[c];

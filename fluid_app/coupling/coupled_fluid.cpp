@@ -1,5 +1,6 @@
 #include "fluid_app/coupling/coupled_fluid.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -81,28 +82,43 @@ void restore_covered(hlbm::BodyField<T>& bodies, const std::vector<CoveredRecord
   for (const auto& [id, m] : mine) bodies.restore_covered(m);
 }
 
-// This rank's work at the end of the run: its cells, those a body covers (d < 1: the band and
-// the interiors, where the porous kernel and the load sums run) and the bodies in its table.
+// This rank's work at the end of the run: its cells, those a body covers (d < 1), split into
+// the band (0 < d < 1) and the bodies' interiors (d = 0), where the porous kernel and the load
+// sums run; the bodies in its table and those that cover at least one of its cells; what its
+// halo exchange sent per lattice step (the tables of tools/scaling.py's cost model).
 template <class T>
 void count_work(CouplingSession& session, const FluidSolver<T>& solver,
                 double covered_cell_weight) {
   const LocalBox& box = solver.box();
   const PorousField<T>& field = solver.porous();
-  double covered = 0, solid = 0;
+  double covered = 0, interior = 0;
+  std::vector<char> touching(field.bodies.size(), 0);
   if (field.active)
     for (int z = 1; z <= box.n[2]; ++z)
       for (int y = 1; y <= box.n[1]; ++y)
         for (int x = 1; x <= box.n[0]; ++x) {
-          const float d = field.d[std::size_t(box.index(x, y, z))];
+          const std::size_t c = std::size_t(box.index(x, y, z));
+          const float d = field.d[c];
           covered += d < 1.0f;
-          solid += d == 0.0f;
+          interior += d == 0.0f;
+          const std::int32_t b = field.body[c];
+          if (d < 1.0f && b >= 0 && std::size_t(b) < touching.size()) touching[std::size_t(b)] = 1;
         }
+  double touched = 0;
+  for (char t : touching) touched += t;
+  const HaloTraffic& halo = solver.halo_traffic();
+  const double exchanges = double(std::max<long long>(halo.exchanges, 1));
   session.count("cells", double(box.interior_cells()));
+  session.count("cells_with_ghosts", double(box.cells_with_ghosts()));
   session.count("covered_cells", covered);
-  session.count("solid_cells", solid);
+  session.count("band_cells", covered - interior);
+  session.count("body_interior_cells", interior);
   session.count("bodies_in_table", double(field.bodies.size()));
+  session.count("bodies_touching", touched);
   session.count("weighted_work",
                 weighted_work(double(box.interior_cells()), covered, covered_cell_weight));
+  session.count("halo_bytes_per_step", double(halo.bytes) / exchanges);
+  session.count("halo_messages_per_step", double(halo.messages) / exchanges);
 }
 
 template <class T>

@@ -68,6 +68,7 @@ HaloExchange<T>::HaloExchange(const Decomposition& dec, CellIndex stride)
 template <class T>
 void HaloExchange<T>::start(T* f, bool after_odd) {
   requests_.clear();
+  ++traffic_.exchanges;
   for (int dir = 0; dir < 27; ++dir) {
     Links& l = links_[dir];
     if (l.neighbour == MPI_PROC_NULL || l.neighbour == rank_ || l.ghost.empty()) continue;
@@ -83,6 +84,8 @@ void HaloExchange<T>::start(T* f, bool after_odd) {
     requests_.emplace_back();
     MPI_Isend(l.send.data(), int(l.send.size()), mpi_type<T>(), l.neighbour, dir, comm_,
               &requests_.back());
+    traffic_.bytes += static_cast<long long>(l.send.size() * sizeof(T));
+    ++traffic_.messages;
   }
 }
 

@@ -21,6 +21,14 @@
 
 namespace lbdem {
 
+// What this rank sent to other ranks (payload bytes, messages), summed over exchanges; the
+// links are symmetric, so it also receives as much. Copies to itself are not counted.
+struct HaloTraffic {
+  long long bytes = 0;
+  long long messages = 0;
+  long long exchanges = 0;
+};
+
 template <class T>
 class HaloExchange {
  public:
@@ -35,6 +43,7 @@ class HaloExchange {
   const std::vector<CellIndex>& ghost_list(int dir) const { return links_[dir].ghost; }
   const std::vector<CellIndex>& inner_list(int dir) const { return links_[dir].inner; }
   static int direction(int ex, int ey, int ez) { return (ex + 1) + 3 * (ey + 1) + 9 * (ez + 1); }
+  const HaloTraffic& traffic() const { return traffic_; }
 
  private:
   struct Links {
@@ -47,6 +56,7 @@ class HaloExchange {
   int rank_;
   std::array<Links, 27> links_;
   std::vector<MPI_Request> requests_;
+  HaloTraffic traffic_;
 };
 
 extern template class HaloExchange<double>;

@@ -95,7 +95,10 @@ TEST_F(Alone, WritesTheRunSummaryWithCountersAndTheSplit) {
   session.count("bodies", 5);  // set, not added
   session.output("out/trace.csv");
   while (session.ongoing()) session.timed("lattice", [&] { session.advance(0); });
-  EXPECT_EQ(session.finish({}), 0);
+  CouplingTimes coupler;  // 6 steps: 100 bytes in 2 messages per step
+  coupler.bytes = 600;
+  coupler.messages = 12;
+  EXPECT_EQ(session.finish(coupler), 0);
   std::ifstream in(run_summary_path(scene, "fluid"));
   ASSERT_TRUE(in) << run_summary_path(scene, "fluid");
   std::stringstream text;
@@ -104,6 +107,8 @@ TEST_F(Alone, WritesTheRunSummaryWithCountersAndTheSplit) {
   for (const char* want :
        {"\"end\": \"completed\"", "\"steps\": {\"first\": 0, \"last\": 6, \"schedule\": 6}",
         "\"cells\": {\"values\": [4096]", "\"bodies\": {\"values\": [5]", "\"max_rss_mib\"",
+        "\"coupler_bytes_per_step\": {\"values\": [100]", "\"busy_cpu_s_per_step\"",
+        "\"per_step_cpu_s\": {\"lattice\": ", "\"coupler_messages_per_step\": {\"values\": [2]",
         "\"lattice\": ", "\"idle\": 0", "\"outputs\": [\"out/trace.csv\"]", "\"max_over_mean\": 1"})
     EXPECT_NE(json.find(want), std::string::npos) << want << "\n" << json;
 }

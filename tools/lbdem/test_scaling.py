@@ -1,0 +1,87 @@
+"""The cost model's pieces (scaling.py): the fit, the halo links, the geometry of the counters."""
+import math
+import unittest
+
+import numpy as np
+
+from lbdem import scaling
+
+
+class Fit(unittest.TestCase):
+    def test_nnls_recovers_known_costs(self):
+        rng = np.random.default_rng(1)
+        a = rng.uniform(1, 10, (8, 3))
+        x = np.array([2e-8, 0.0, 5e-7])
+        np.testing.assert_allclose(scaling.nnls(a, a @ x), x, atol=1e-15)
+
+    def test_nnls_never_returns_a_negative_cost(self):
+        a = np.array([[1.0, 1.0], [1.0, 2.0], [1.0, 3.0]])
+        b = np.array([3.0, 2.0, 1.0])  # unconstrained slope -1
+        x = scaling.nnls(a, b)
+        self.assertTrue((x >= 0).all())
+        self.assertAlmostEqual(x[1], 0.0)
+        self.assertAlmostEqual(x[0], 2.0)  # b's projection on the first column
+
+    def test_fit_costs_on_synthetic_runs(self):
+        truth = {"cell": 2e-8, "covered": 1e-7, "porosity_cell": 3e-7, "body": 2e-5,
+                 "coupler_byte": 1e-9, "atom_substep": 4e-8, "halo_byte": 2e-9,
+                 "exchange_step": 1e-4, "dem_step": 5e-4}
+        m = scaling.Model(truth)
+        runs = []
+        for cells, band, inside, bodies in ((195112, 40000, 24000, 64), (195112, 5000, 3000, 8),
+                                            (195112, 12000, 12000, 8), (195112, 2500, 1000, 8)):
+            f = {"cells": cells, "covered_cells": band + inside, "band_cells": band,
+                 "body_interior_cells": inside, "bodies_in_table": bodies,
+                 "halo_bytes_per_step": 0.0, "coupler_bytes_per_step": 200.0 * bodies}
+            d = {"atoms": 27 * bodies, "ghost_atoms": 10 * bodies}
+            runs.append({"f": f, "d": d, "substeps": 5,
+                         "lattice": truth["cell"] * cells + truth["covered"] * (band + inside),
+                         "porosity": truth["porosity_cell"] * (band + inside)
+                         + truth["body"] * bodies, "exchange": m.exchange(f),
+                         "dem": m.dem_busy(d, 5)})
+        two = [dict(runs[1]["f"], cells=97556, halo_bytes_per_step=b) for b in (135000, 140000)]
+        fitted = scaling.fit_costs(runs, [(two, [m.fluid_busy(f) for f in two])])
+        for k, v in truth.items():
+            self.assertAlmostEqual(fitted.costs[k] / v, 1.0, places=6, msg=k)
+
+
+class Halo(unittest.TestCase):
+    def test_one_rank_on_a_periodic_box_sends_nothing(self):
+        self.assertEqual(scaling.halo_values((29, 29, 29), (1, 1, 1)), (0, 0))
+
+    def test_a_slab_sends_five_values_per_face_cell_on_each_side(self):
+        # Faces 5 m k - 2 m - 2 k, the 4 edges of each side add 2 m + 2 k back.
+        self.assertEqual(scaling.halo_values((10, 29, 31), (3, 1, 1)), (2 * 5 * 29 * 31, 10))
+
+    def test_a_block_with_every_neighbour_remote(self):
+        n = 12
+        self.assertEqual(scaling.halo_values((n, n, n), (3, 3, 3)), (30 * n * n - 12 * n, 18))
+
+
+class Geometry(unittest.TestCase):
+    def test_grown_volume(self):
+        self.assertEqual(scaling.grown_volume((2, 3, 4), 0), 24)
+        r = 1.5
+        self.assertAlmostEqual(scaling.grown_volume((0, 0, 0), r), 4 / 3 * math.pi * r**3)
+
+    def test_ghost_reach_inverts_the_grown_volume(self):
+        box = (58, 58, 58)
+        v = scaling.grown_volume(box, 7.25) / 58**3 - 1
+        self.assertAlmostEqual(scaling.ghost_reach_from(1000, 1000 * v, box), 7.25, places=6)
+
+    def test_dims_split_the_longest_axis_first(self):
+        self.assertEqual(scaling.dims_create(2, (116, 58, 58)), (2, 1, 1))
+        self.assertEqual(sorted(scaling.dims_create(64)), [4, 4, 4])
+
+    def test_uniform_counters_of_one_rank_hold_every_body(self):
+        c = scaling.uniform_counters(58, 64, 1, 1, {"covered": 1000, "band": 600, "interior": 400},
+                                     10.4, 8.4, 7.0, 27)
+        self.assertEqual(c["fluid"]["cells"], 58**3)
+        self.assertEqual(c["fluid"]["bodies_in_table"], 64)
+        self.assertAlmostEqual(c["fluid"]["covered_cells"], 64000)
+        self.assertEqual(c["fluid"]["halo_bytes_per_step"], 0)
+        self.assertAlmostEqual(c["dem"]["coupler_bytes_per_step"], 64 * 200)
+
+
+if __name__ == "__main__":
+    unittest.main()
