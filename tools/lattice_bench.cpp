@@ -1,5 +1,5 @@
 // lattice_bench: cost of the lattice step with a scene's bodies embedded against the same
-// lattice without them (issue 24 item 2), and a fingerprint of the state for bit-identity
+// lattice without them, and a fingerprint of the state for bit-identity
 // checks of kernel changes.
 //
 //   lattice_bench scene.yaml [--steps 200] [--repeat 3] [--force] [--fingerprint N]

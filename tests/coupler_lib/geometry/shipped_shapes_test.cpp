@@ -136,7 +136,7 @@ TEST(ShippedShapes, ClumpsMatchTheirHeaders) {
   EXPECT_GE(files, 8);
 }
 
-// Known off (issue 15): the sampling gives volume errors 0.0815 (cube_489_surface, header
+// Known off: the sampling gives volume errors 0.0815 (cube_489_surface, header
 // 0.0553) and 0.2314 (cube_27_fill, header 0.2067); the deviations agree within 1.2 sample
 // spacings and the one-sphere clump exactly. Likely cause: the generator's lattice keeps 3
 // empty voxel layers (0.037) around the shape while surface spheres reach further out, so the

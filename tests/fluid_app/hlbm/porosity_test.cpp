@@ -350,7 +350,7 @@ TEST(Porosity, ReachBoundsThePorousSupport) {
   EXPECT_LT(bodies.reach(0), 4 * std::sqrt(3.0) + 2.0);
 }
 
-// Ties of the nearest lookup (issue 23): a sphere voxelized as the catalogue does it (SI spacing
+// Ties of the nearest lookup: a sphere voxelized as the catalogue does it (SI spacing
 // h = dx / 2, lattice centred on the sphere) with an even voxel count, centred between nodes or
 // on a node, puts every stencil point of every node on a voxel face. The lookup must read such a
 // pose as one side of the tie for every point: the same field as the body moved by 1e-7 cells

@@ -1,4 +1,4 @@
-// Pose invariance of the loads on a fixed body, as a property (issue 23, docs/validation.md
+// Pose invariance of the loads on a fixed body, as a property (docs/validation.md
 // section 7). One body held in place in a triply periodic box (a simple cubic array), on the
 // real solver and the real shape catalogue's voxelization (SI spacing h = dx / 2, the calibrated
 // hydrodynamic radius of the scene defaults, the nearest lookup):
