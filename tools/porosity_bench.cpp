@@ -8,12 +8,14 @@
 // rad per update in a fixed random direction (a settling suspension at lattice Mach ~0.05):
 // every update is incremental. Prints, per lookup: band cells per body and per body volume
 // (cells with 0 < d < 1 over the voxelized body volume in cells), evaluations per band cell, ns
-// per band cell and per evaluation (CPU time of the thread), and the cost of one full embedding for
-// comparison.
+// per band cell and per evaluation (CPU time of the thread), the cost of one full embedding for
+// comparison, and a digest of the porosity field after every update (FNV-1a over d and the body
+// index of every cell), to compare two builds bit for bit.
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
@@ -29,6 +31,15 @@ namespace {
 
 using lbdem::BodyState;
 using namespace lbdem::hlbm;
+
+// FNV-1a over the bytes of an array, continuing from h.
+template <class V>
+std::uint64_t fnv1a(std::uint64_t h, const V& values) {
+  const auto* bytes = reinterpret_cast<const unsigned char*>(values.data());
+  for (std::size_t i = 0; i < values.size() * sizeof(values[0]); ++i)
+    h = (h ^ bytes[i]) * 0x100000001b3ull;
+  return h;
+}
 
 // CPU time of this thread: on a shared machine the wall time mostly measures the others.
 double cpu_seconds() {
@@ -94,6 +105,7 @@ void run(const lbdem::Scene& scene, const std::vector<lbdem::Shape>& shapes, Por
   const double embed_s = cpu_seconds() - t0;
   std::size_t evaluated = 0, band = 0, scans = 0;
   double update_s = 0;
+  std::uint64_t digest = fnv1a(fnv1a(0xcbf29ce484222325ull, field.d), field.body);
   for (int k = 0; k < updates; ++k) {
     advance();
     pack();
@@ -103,14 +115,16 @@ void run(const lbdem::Scene& scene, const std::vector<lbdem::Shape>& shapes, Por
     evaluated += s.evaluated;
     band += s.band;
     scans += s.full_scans;
+    digest = fnv1a(fnv1a(digest, field.d), field.body);
   }
   const double n = static_cast<double>(movers.size());
   const double band_per_update = double(band) / updates;
-  std::printf("  %-9s %6zu %10.0f %10.3f %9.2f %12.1f %12.1f %10.1f %12.1f %6zu\n",
+  std::printf("  %-9s %6zu %10.0f %10.3f %9.2f %12.1f %12.1f %10.1f %12.1f %6zu  %016llx\n",
               lookup == PorosityLookup::nearest ? "nearest" : "trilinear", movers.size(),
               band_per_update / n, band_per_update / volume_cells, double(evaluated) / double(band),
               1e9 * update_s / double(band), 1e9 * update_s / double(evaluated),
-              1e6 * update_s / updates, 1e9 * embed_s / double(first.evaluated), scans);
+              1e6 * update_s / updates, 1e9 * embed_s / double(first.evaluated), scans,
+              static_cast<unsigned long long>(digest));
 }
 
 }  // namespace
@@ -145,9 +159,9 @@ int main(int argc, char** argv) {
     const auto& c = scene.fluid->cells;
     std::printf("# porosity_bench %s: %d x %d x %d cells, %d updates (CPU time of the thread)\n",
                 argv[1], c[0], c[1], c[2], updates);
-    std::printf("# %-9s %6s %10s %10s %9s %12s %12s %10s %12s %6s\n", "lookup", "bodies",
+    std::printf("# %-9s %6s %10s %10s %9s %12s %12s %10s %12s %6s  %-16s\n", "lookup", "bodies",
                 "band/body", "band/vol", "eval/band", "ns/band cell", "ns/eval", "us/update",
-                "embed ns/ev", "scans");
+                "embed ns/ev", "scans", "field digest");
     if (which == "both" || which == "trilinear")
       run(scene, shapes, PorosityLookup::trilinear, updates);
     if (which == "both" || which == "nearest") run(scene, shapes, PorosityLookup::nearest, updates);
