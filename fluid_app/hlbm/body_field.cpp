@@ -118,19 +118,58 @@ void BodyField<T>::tabulate_offsets(const Tracked& t) {
   }
 }
 
+// Queues the window cells `bits` (one word per 64 cells) of window row `row` for evaluation,
+// mapped into the reference lattice as porosity() maps them: p = to_ref r + shift as the same
+// fused multiply-adds, the y and z terms once per row.
 template <class T>
-float BodyField<T>::evaluate(std::int32_t slot, std::uint32_t cell, int x, int y, int z,
-                             UpdateStats& stats) {
-  ++stats.evaluated;
-  const Eigen::Vector3d r(rel_[0][static_cast<std::size_t>(x)],
-                          rel_[1][static_cast<std::size_t>(y)],
-                          rel_[2][static_cast<std::size_t>(z)]);
-  const float d = porosity(tracked_[static_cast<std::size_t>(slot)], r);
-  // A cell whose interior owner changes is reset by combine(); the band cells (old and new)
-  // are added by the callers. The interior map is the field itself: d = 0 exactly where a
-  // body's interior covers the cell (band cells have 0 < d < 1), with that body's index, so
-  // no per-cell map of its own is kept (4 B per cell, docs/performance.md "Memory per cell").
-  // The field is read by the kernel only after the update, once combine() has run.
+void BodyField<T>::queue_row(const Tracked& t, std::size_t row, const std::uint64_t* bits) {
+  const Window& w = window_;
+  const std::size_t nx = w.l[0].size(), ny = w.l[1].size();
+  const int y = w.l[1][row % ny], z = w.l[2][row / ny];
+  const Eigen::Matrix3d& m = t.to_ref;
+  const Eigen::Vector3d& shift = shapes_[static_cast<std::size_t>(t.shape)].shift();
+  const double r1 = rel_[1][static_cast<std::size_t>(y)], r2 = rel_[2][static_cast<std::size_t>(z)];
+  const double b0 = std::fma(m(0, 1), r1, std::fma(m(0, 2), r2, shift[0]));
+  const double b1 = std::fma(m(1, 1), r1, std::fma(m(1, 2), r2, shift[1]));
+  const double b2 = std::fma(m(2, 1), r1, std::fma(m(2, 2), r2, shift[2]));
+  const auto first = static_cast<std::uint32_t>(sub_.box.index(0, y, z));
+  for (std::size_t k = 0; k < static_cast<std::size_t>(w.words); ++k)
+    for (std::uint64_t left = bits[k]; left; left &= left - 1) {
+      const std::size_t i = 64 * k + static_cast<std::size_t>(std::countr_zero(left));
+      const int x = w.l[0][i];
+      const double r0 = rel_[0][static_cast<std::size_t>(x)];
+      batch_.push(std::fma(m(0, 0), r0, b0), std::fma(m(1, 0), r0, b1), std::fma(m(2, 0), r0, b2));
+      queue_.cell.push_back(first + static_cast<std::uint32_t>(x));
+      queue_.window.push_back(static_cast<std::uint32_t>(row * nx + i));
+    }
+}
+
+// Porosity of the queued cells for body `slot` (into batch_.d), and the interior map.
+template <class T>
+void BodyField<T>::evaluate_queue(std::int32_t slot, UpdateStats& stats) {
+  const Tracked& t = tracked_[static_cast<std::size_t>(slot)];
+  const ReferencePorosity& ref = shapes_[static_cast<std::size_t>(t.shape)];
+  const std::size_t n = queue_.cell.size();
+  stats.evaluated += n;
+  if (lookup_ == PorosityLookup::nearest) {
+    ref.nearest(batch_, t.stencil);
+  } else {
+    batch_.d.resize(n);
+    for (std::size_t k = 0; k < n; ++k)
+      batch_.d[k] =
+          static_cast<float>(ref.at(Eigen::Vector3d(batch_.x[k], batch_.y[k], batch_.z[k])));
+  }
+  for (std::size_t k = 0; k < n; ++k) mark_interior(slot, queue_.cell[k], batch_.d[k], stats);
+}
+
+// A cell whose interior owner changes is reset by combine(); the band cells (old and new) are
+// added by the callers. The interior map is the field itself: d = 0 exactly where a body's
+// interior covers the cell (band cells have 0 < d < 1), with that body's index, so no per-cell
+// map of its own is kept (4 B per cell, docs/performance.md "Memory per cell"). The field is
+// read by the kernel only after the update, once combine() has run.
+template <class T>
+void BodyField<T>::mark_interior(std::int32_t slot, std::uint32_t cell, float d,
+                                 UpdateStats& stats) {
   float& fd = field_.d[cell];
   std::int32_t& fb = field_.body[cell];
   const std::int32_t in = fd == 0.0f ? fb : -1;
@@ -146,7 +185,6 @@ float BodyField<T>::evaluate(std::int32_t slot, std::uint32_t cell, int x, int y
     fb = -1;
     touched_.push_back(cell);
   }
-  return d;
 }
 
 // Local coordinates per axis within the support radius of a body (plus one cell). Reads the
@@ -163,22 +201,29 @@ std::array<std::vector<int>, 3> BodyField<T>::support(const Tracked& t) const {
 }
 
 // Embeds a body from scratch: every stored cell within its support (cost ~ volume; used
-// when a body appears or jumps).
+// when a body appears or jumps), queued row by row, so the band comes out in cell order.
 template <class T>
 void BodyField<T>::scan(std::int32_t slot, std::vector<BandCell>& band, UpdateStats& stats) {
-  tabulate_offsets(tracked_[static_cast<std::size_t>(slot)]);
-  const auto lists = support(tracked_[static_cast<std::size_t>(slot)]);
+  const Tracked& t = tracked_[static_cast<std::size_t>(slot)];
+  tabulate_offsets(t);
+  open_window(support(t));
   ++stats.full_scans;
-  for (int z : lists[2])
-    for (int y : lists[1])
-      for (int x : lists[0]) {
-        const auto c = static_cast<std::uint32_t>(sub_.box.index(x, y, z));
-        const float d = evaluate(slot, c, x, y, z, stats);
-        if (d > 0.0f && d < 1.0f) {
-          band.push_back({c, d, local(x, y, z)});
-          touched_.push_back(c);
-        }
-      }
+  const Window& w = window_;
+  const std::size_t nx = w.l[0].size(), ny = w.l[1].size();
+  std::vector<std::uint64_t> all(static_cast<std::size_t>(w.words), 0);
+  for (std::size_t i = 0; i < nx; ++i) all[i / 64] |= std::uint64_t{1} << (i % 64);
+  queue_.clear();
+  batch_.clear();
+  for (std::size_t row = 0; row < w.rows; ++row) queue_row(t, row, all.data());
+  evaluate_queue(slot, stats);
+  for (std::size_t k = 0; k < queue_.cell.size(); ++k) {
+    const float d = batch_.d[k];
+    if (d > 0.0f && d < 1.0f) {
+      const std::size_t row = queue_.window[k] / nx, i = queue_.window[k] % nx;
+      band.push_back({queue_.cell[k], d, local(w.l[0][i], w.l[1][row % ny], w.l[2][row / ny])});
+      touched_.push_back(queue_.cell[k]);
+    }
+  }
 }
 
 // Takes a body out of the field at its last pose: its band cells and the interior cells it
@@ -223,29 +268,34 @@ void BodyField<T>::open_window(const std::array<std::vector<int>, 3>& lists) {
       w.adjacent_up[(i + 1) / 64] |= std::uint64_t{1} << ((i + 1) % 64);
       w.adjacent_down[i / 64] |= std::uint64_t{1} << (i % 64);
     }
-  for (auto* bits : {&w.evaluated, &w.band, &w.frontier, &w.candidates})
+  for (auto* bits : {&w.evaluated, &w.band, &w.old, &w.frontier, &w.candidates})
     bits->assign(w.rows * words, 0);
-  w.listed.assign(w.rows, 0);
+  w.in_frontier.assign(w.rows, 0);
+  w.in_candidates.assign(w.rows, 0);
   w.frontier_rows.clear();
   w.candidate_rows.clear();
   w.grown.resize(words);
+  w.fresh.resize(words);
   w.d.resize(w.rows * nx);
 }
 
 // The surface-only update (paper: "only the nodes currently covered by a body and a
-// surrounding growth layer have to be revisited"). Candidates: the old band (cells that may
-// leave it) and, grown from it through 26-neighbours, every cell connected to a new band
-// cell. With a move below kMaxIncrementalMove (a third of the ~1.5-cell band width) every
-// piece of the new band overlaps the old band, except pieces that enter the stored box from
-// outside: those contain a cell of the box's outermost layer, so when the body's support
-// crosses that layer its cells there are candidates too. Interior cells (d = 0) not reached
-// keep their value: they cannot have left the interior without entering the new band.
+// surrounding growth layer have to be revisited"). The cells evaluated: every 26-neighbour of
+// an old band cell (the old band itself among them) and, grown from there, every 26-neighbour of
+// every new band cell. With a move below kMaxIncrementalMove (a third of the ~1.5-cell band
+// width) every piece of the new band overlaps the old band, except pieces that enter the
+// stored box from outside: those contain a cell of the box's outermost layer, so when the
+// body's support crosses that layer its cells there are evaluated too. Interior cells (d = 0)
+// not reached keep their value: they cannot have left the interior without entering the new
+// band.
 //
-// The growth runs on bit rows of the body's window, a round at a time: the band cells found
-// in the last round are dilated by one cell (shifts along x, neighbouring rows in y and z)
-// and the cells of that not yet evaluated are the next round's candidates. A band cell's
-// neighbours are within reach + 1 cell of the centre on every axis, so inside the window.
-// The new band comes out in cell order, as from a full scan.
+// The growth runs on bit rows of the body's window, a round at a time: a set of cells is
+// dilated by one cell (shifts along x, neighbouring rows in y and z, masked where the lists
+// skip cells) and the cells of that not yet evaluated are evaluated as one batch. The first
+// round dilates the old band; each later one the band cells found in the round before that
+// were not in the old band (the neighbours of old band cells are all evaluated already). A
+// band cell's neighbours are within reach + 1 cell of the centre on every axis, so inside the
+// window. The new band comes out in cell order, as from a full scan.
 template <class T>
 void BodyField<T>::follow_band(std::int32_t slot, std::vector<BandCell>& band, UpdateStats& stats) {
   const LocalBox& box = sub_.box;
@@ -256,36 +306,26 @@ void BodyField<T>::follow_band(std::int32_t slot, std::vector<BandCell>& band, U
   const std::size_t nx = w.l[0].size(), ny = w.l[1].size(), nz = w.l[2].size();
   const auto words = static_cast<std::size_t>(w.words);
 
-  // Evaluates window cell (i, row) unless done; a band cell joins the band and the frontier.
-  auto visit = [&](std::size_t i, std::size_t jy, std::size_t jz) {
-    const std::size_t row = jy + ny * jz;
-    const std::size_t word = row * words + i / 64;
-    const std::uint64_t bit = std::uint64_t{1} << (i % 64);
-    if (w.evaluated[word] & bit) return;
-    w.evaluated[word] |= bit;
-    const int x = w.l[0][i], y = w.l[1][jy], z = w.l[2][jz];
-    const float d = evaluate(slot, static_cast<std::uint32_t>(box.index(x, y, z)), x, y, z, stats);
-    if (d > 0.0f && d < 1.0f) {
-      w.d[row * nx + i] = d;
-      w.band[word] |= bit;
-      if (!w.frontier[word]) {
-        bool empty = true;
-        for (std::size_t k = 0; k < words; ++k) empty = empty && !w.frontier[row * words + k];
-        if (empty) w.frontier_rows.push_back(row);
-      }
-      w.frontier[word] |= bit;
+  auto mark = [&](std::vector<std::uint64_t>& bits, std::vector<std::uint8_t>& listed,
+                  std::vector<std::size_t>& rows, std::size_t i, std::size_t row) {
+    bits[row * words + i / 64] |= std::uint64_t{1} << (i % 64);
+    if (!listed[row]) {
+      listed[row] = 1;
+      rows.push_back(row);
     }
   };
 
-  // Seeds: the old band (inside the window: it moved by less than a cell) and the box's
-  // outermost layer where the support reaches it.
+  // Seeds: the old band (inside the window: it moved by less than a cell) is the first
+  // frontier; the box's outermost layer, where the support reaches it, is evaluated as is.
   for (const BandCell& b : t.band) {
     touched_.push_back(b.cell);
     const int i = w.inv[0][b.l[0]], j = w.inv[1][b.l[1]], k = w.inv[2][b.l[2]];
     if (i < 0 || j < 0 || k < 0)
       throw std::logic_error("BodyField: a band cell of body " + std::to_string(t.id) +
                              " lies beyond its reach after an incremental move");
-    visit(static_cast<std::size_t>(i), static_cast<std::size_t>(j), static_cast<std::size_t>(k));
+    const std::size_t row = static_cast<std::size_t>(j) + ny * static_cast<std::size_t>(k);
+    w.old[row * words + static_cast<std::size_t>(i) / 64] |= std::uint64_t{1} << (i % 64);
+    mark(w.frontier, w.in_frontier, w.frontier_rows, static_cast<std::size_t>(i), row);
   }
   const std::array<std::size_t, 3> n = {nx, ny, nz};
   for (int a = 0; a < 3; ++a)
@@ -299,17 +339,15 @@ void BodyField<T>::follow_band(std::int32_t slot, std::vector<BandCell>& band, U
           wi[static_cast<std::size_t>(a)] = static_cast<std::size_t>(wf);
           wi[static_cast<std::size_t>(b)] = ib;
           wi[static_cast<std::size_t>(c)] = ic;
-          visit(wi[0], wi[1], wi[2]);
+          mark(w.candidates, w.in_candidates, w.candidate_rows, wi[0], wi[1] + ny * wi[2]);
         }
     }
 
-  // Rounds of growth.
   std::vector<std::uint64_t>& grown = w.grown;
-  std::vector<std::size_t>& rows = w.growing_rows;
-  while (!w.frontier_rows.empty()) {
-    rows.swap(w.frontier_rows);
-    w.frontier_rows.clear();
-    for (std::size_t row : rows) {
+  for (;;) {
+    // Dilate the frontier into the candidates.
+    for (std::size_t row : w.frontier_rows) {
+      w.in_frontier[row] = 0;
       const std::size_t base = row * words;
       for (std::size_t k = 0; k < words; ++k) {
         const std::uint64_t v = w.frontier[base + k];
@@ -327,26 +365,45 @@ void BodyField<T>::follow_band(std::int32_t slot, std::vector<BandCell>& band, U
           if (ty >= ny || w.l[1][ty] != w.l[1][jy] + dy) continue;
           const std::size_t target = ty + ny * tz;
           for (std::size_t k = 0; k < words; ++k) w.candidates[target * words + k] |= grown[k];
-          if (!w.listed[target]) {
-            w.listed[target] = 1;
+          if (!w.in_candidates[target]) {
+            w.in_candidates[target] = 1;
             w.candidate_rows.push_back(target);
           }
         }
       }
     }
+    w.frontier_rows.clear();
+    if (w.candidate_rows.empty()) break;
+
+    // Evaluate the candidates not evaluated yet.
+    queue_.clear();
+    batch_.clear();
     for (std::size_t row : w.candidate_rows) {
-      w.listed[row] = 0;
-      const std::size_t jy = row % ny, jz = row / ny;
+      w.in_candidates[row] = 0;
+      bool any = false;
       for (std::size_t k = 0; k < words; ++k) {
-        std::uint64_t left = w.candidates[row * words + k] & ~w.evaluated[row * words + k];
-        w.candidates[row * words + k] = 0;
-        while (left) {
-          visit(64 * k + static_cast<std::size_t>(std::countr_zero(left)), jy, jz);
-          left &= left - 1;
-        }
+        const std::size_t word = row * words + k;
+        w.fresh[k] = w.candidates[word] & ~w.evaluated[word];
+        w.candidates[word] = 0;
+        w.evaluated[word] |= w.fresh[k];
+        any = any || w.fresh[k];
       }
+      if (any) queue_row(t, row, w.fresh.data());
     }
     w.candidate_rows.clear();
+    evaluate_queue(slot, stats);
+
+    // Band cells join the band; those not in the old band are the next frontier.
+    for (std::size_t k = 0; k < queue_.cell.size(); ++k) {
+      const float d = batch_.d[k];
+      if (!(d > 0.0f && d < 1.0f)) continue;
+      const std::size_t cell = queue_.window[k], row = cell / nx, i = cell % nx;
+      const std::size_t word = row * words + i / 64;
+      const std::uint64_t bit = std::uint64_t{1} << (i % 64);
+      w.d[cell] = d;
+      w.band[word] |= bit;
+      if (!(w.old[word] & bit)) mark(w.frontier, w.in_frontier, w.frontier_rows, i, row);
+    }
   }
 
   for (std::size_t row = 0; row < w.rows; ++row) {

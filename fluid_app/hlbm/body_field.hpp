@@ -135,11 +135,12 @@ class BodyField {
     // Per x word: bit w set when window x index w is the x neighbour of w - 1 (up) or of
     // w + 1 (down) in the box (the lists skip the cells out of reach).
     std::vector<std::uint64_t> adjacent_up, adjacent_down;
-    std::vector<std::uint64_t> evaluated, band, frontier, candidates;  // rows x words
-    std::vector<std::uint8_t> listed;                                  // per row: in a list
-    std::vector<std::size_t> frontier_rows, candidate_rows, growing_rows;
-    std::vector<std::uint64_t> grown;  // one dilated frontier row
-    std::vector<float> d;              // porosity of the evaluated band cells, by window cell
+    // rows x words: evaluated, band found, old band, to dilate, to evaluate
+    std::vector<std::uint64_t> evaluated, band, old, frontier, candidates;
+    std::vector<std::uint8_t> in_frontier, in_candidates;  // per row: listed below
+    std::vector<std::size_t> frontier_rows, candidate_rows;
+    std::vector<std::uint64_t> grown, fresh;  // one row: dilated frontier, cells to evaluate
+    std::vector<float> d;  // porosity of the evaluated band cells, by window cell
   };
   std::vector<ReferencePorosity> shapes_;
   PorosityLookup lookup_ = PorosityLookup::trilinear;
@@ -150,6 +151,16 @@ class BodyField {
   std::unordered_map<std::int64_t, std::int32_t> slots_;
   std::vector<std::uint32_t> touched_;  // cells evaluated in this update
   Window window_;                       // band search scratch
+  // Cells to evaluate as one batch: cell index and window cell (row * nx + i).
+  struct Queue {
+    std::vector<std::uint32_t> cell, window;
+    void clear() {
+      cell.clear();
+      window.clear();
+    }
+  };
+  Queue queue_;
+  NearestBatch batch_;  // the queued cells mapped into the reference lattice, and their porosity
   std::vector<std::int64_t> departed_;  // bodies taken out in the last update with Q != 0
   // Minimum-image offset from the centre of the body being updated, per axis and local
   // coordinate (lattice units): tabulated once per body and update, read per evaluation.
@@ -158,7 +169,9 @@ class BodyField {
   void set_pose(Tracked& t, const BodyState& s) const;
   float porosity(const Tracked& t, const Eigen::Vector3d& r) const;
   void tabulate_offsets(const Tracked& t);
-  float evaluate(std::int32_t slot, std::uint32_t cell, int x, int y, int z, UpdateStats& stats);
+  void queue_row(const Tracked& t, std::size_t row, const std::uint64_t* bits);
+  void evaluate_queue(std::int32_t slot, UpdateStats& stats);
+  void mark_interior(std::int32_t slot, std::uint32_t cell, float d, UpdateStats& stats);
   void open_window(const std::array<std::vector<int>, 3>& lists);
   std::array<std::vector<int>, 3> support(const Tracked& t) const;
   void scan(std::int32_t slot, std::vector<BandCell>& band, UpdateStats& stats);

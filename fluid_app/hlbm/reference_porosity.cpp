@@ -41,22 +41,34 @@ ReferencePorosity::ReferencePorosity(const Voxels& voxels) : h_(voxels.h) {
   };
 
   smooth_.assign(static_cast<std::size_t>(m_[0]) * m_[1] * m_[2], 1.0f);
-  fluid_.assign(smooth_.size(), 1.0f);
+  std::vector<float> fluid(smooth_.size(), 1.0f);  // on the padded lattice
   std::size_t idx = 0;
   for (int k = 0; k < m_[2]; ++k)
     for (int j = 0; j < m_[1]; ++j)
       for (int i = 0; i < m_[0]; ++i, ++idx) {
-        fluid_[idx] = fluid_at(i - kPad, j - kPad, k - kPad);
-        double fluid = 0;
+        fluid[idx] = fluid_at(i - kPad, j - kPad, k - kPad);
+        double sum = 0;
         for (const auto& c : d3q19::c)
-          fluid += fluid_at(i - kPad + c[0], j - kPad + c[1], k - kPad + c[2]);
-        // fluid / 19 is exactly 1 (or 0) when all 19 points are wholly fluid (or solid).
-        smooth_[idx] = static_cast<float>(fluid / 19.0);
+          sum += fluid_at(i - kPad + c[0], j - kPad + c[1], k - kPad + c[2]);
+        // sum / 19 is exactly 1 (or 0) when all 19 points are wholly fluid (or solid).
+        smooth_[idx] = static_cast<float>(sum / 19.0);
       }
+
+  const std::array<std::ptrdiff_t, 3> e = {m_[0] + 2 * kPointPad, m_[1] + 2 * kPointPad,
+                                           m_[2] + 2 * kPointPad};
+  stride_ = {e[0], e[0] * e[1]};
+  fluid_origin_ = kPointPad * (1 + stride_[0] + stride_[1]);
+  fluid_.assign(static_cast<std::size_t>(e[0] * e[1] * e[2]), 1.0f);
+  idx = 0;
+  for (int k = 0; k < m_[2]; ++k)
+    for (int j = 0; j < m_[1]; ++j)
+      for (int i = 0; i < m_[0]; ++i, ++idx)
+        fluid_[static_cast<std::size_t>(fluid_origin_ + i + stride_[0] * j + stride_[1] * k)] =
+            fluid[idx];
 
   // Block classes: running minimum and maximum of the fluid fraction over 5 voxels along each
   // axis in turn (outside the padded lattice: 1).
-  std::vector<float> lo = fluid_, hi = fluid_;
+  std::vector<float> lo = fluid, hi = fluid;
   const std::array<std::size_t, 3> stride = {1, static_cast<std::size_t>(m_[0]),
                                              static_cast<std::size_t>(m_[0]) * m_[1]};
   for (int a = 0; a < 3; ++a) {
@@ -78,8 +90,8 @@ ReferencePorosity::ReferencePorosity(const Voxels& voxels) : h_(voxels.h) {
           }
         }
   }
-  block_.resize(fluid_.size());
-  for (std::size_t v = 0; v < fluid_.size(); ++v)
+  block_.resize(fluid.size());
+  for (std::size_t v = 0; v < fluid.size(); ++v)
     block_[v] = lo[v] == 1.0f ? Block::fluid : hi[v] == 0.0f ? Block::solid : Block::mixed;
 
   for (int k = 0; k < n[2]; ++k)
@@ -94,56 +106,86 @@ ReferencePorosity::ReferencePorosity(const Voxels& voxels) : h_(voxels.h) {
       }
 }
 
-double ReferencePorosity::read_points(const Eigen::Vector3d& ref,
-                                      const NearestStencil& stencil) const {
-  const std::size_t sy = static_cast<std::size_t>(m_[0]);
-  const std::size_t sz = sy * static_cast<std::size_t>(m_[1]);
-  // Voxel index of every point, four at a time where AVX2 is there (the same additions and
-  // comparisons as the scalar loop); a point off the lattice reads voxel 0, a fluid voxel of the
-  // padding.
-  alignas(32) std::array<std::int32_t, NearestStencil::kPadded> voxel;
-  const auto iy = static_cast<std::int32_t>(sy), iz = static_cast<std::int32_t>(sz);
-#if defined(__AVX2__)
-  {
-    const __m256d half = _mm256_set1_pd(kNearestHalf), zero = _mm256_setzero_pd();
-    const __m256d rx = _mm256_set1_pd(ref.x()), ry = _mm256_set1_pd(ref.y()),
-                  rz = _mm256_set1_pd(ref.z());
-    const __m256d mx = _mm256_set1_pd(m_[0]), my = _mm256_set1_pd(m_[1]),
-                  mz = _mm256_set1_pd(m_[2]);
-    const __m128i vy = _mm_set1_epi32(iy), vz = _mm_set1_epi32(iz);
-    for (int g = 0; g < NearestStencil::kPadded; g += 4) {
-      const __m256d x = _mm256_add_pd(_mm256_add_pd(rx, _mm256_load_pd(&stencil.x[g])), half);
-      const __m256d y = _mm256_add_pd(_mm256_add_pd(ry, _mm256_load_pd(&stencil.y[g])), half);
-      const __m256d z = _mm256_add_pd(_mm256_add_pd(rz, _mm256_load_pd(&stencil.z[g])), half);
-      const __m256d on = _mm256_and_pd(
-          _mm256_and_pd(
-              _mm256_and_pd(_mm256_cmp_pd(x, zero, _CMP_GE_OQ), _mm256_cmp_pd(x, mx, _CMP_LT_OQ)),
-              _mm256_and_pd(_mm256_cmp_pd(y, zero, _CMP_GE_OQ), _mm256_cmp_pd(y, my, _CMP_LT_OQ))),
-          _mm256_and_pd(_mm256_cmp_pd(z, zero, _CMP_GE_OQ), _mm256_cmp_pd(z, mz, _CMP_LT_OQ)));
-      const __m128i i = _mm256_cvttpd_epi32(_mm256_and_pd(x, on));
-      const __m128i j = _mm256_cvttpd_epi32(_mm256_and_pd(y, on));
-      const __m128i k = _mm256_cvttpd_epi32(_mm256_and_pd(z, on));
-      const __m128i v =
-          _mm_add_epi32(_mm_add_epi32(i, _mm_mullo_epi32(j, vy)), _mm_mullo_epi32(k, vz));
-      _mm_store_si128(reinterpret_cast<__m128i*>(&voxel[static_cast<std::size_t>(g)]), v);
+// Each point reads the voxel floor(p + o_i + kNearestHalf), the coordinate rounded as
+// (p + o_i) + kNearestHalf; the values are summed in stencil order. The node's nearest voxel lies
+// on the padded lattice (its block is mixed), so every point's voxel lies on fluid_, whose layers
+// beyond the padded lattice are fluid like every point off it.
+float ReferencePorosity::read_points(double x, double y, double z,
+                                     const NearestStencil& stencil) const {
+  const float* base = fluid_.data() + fluid_origin_;
+  float fluid = 0;
+  for (std::size_t i = 0; i < NearestStencil::kPoints; ++i) {
+    const double px = std::floor((x + stencil.x[i]) + kNearestHalf);
+    const double py = std::floor((y + stencil.y[i]) + kNearestHalf);
+    const double pz = std::floor((z + stencil.z[i]) + kNearestHalf);
+    fluid += base[static_cast<std::ptrdiff_t>(px) + stride_[0] * static_cast<std::ptrdiff_t>(py) +
+                  stride_[1] * static_cast<std::ptrdiff_t>(pz)];
+  }
+  return fluid / 19.0f;  // as the averaged lattice: exactly 0 or 1 at the ends
+}
+
+void ReferencePorosity::nearest(NearestBatch& batch, const NearestStencil& stencil) const {
+  const std::size_t n = batch.size();
+  batch.d.resize(n);
+  batch.mixed.clear();
+  for (std::size_t k = 0; k < n; ++k) {
+    switch (
+        block_at(batch.x[k] + kNearestHalf, batch.y[k] + kNearestHalf, batch.z[k] + kNearestHalf)) {
+      case Block::fluid:
+        batch.d[k] = 1.0f;
+        break;
+      case Block::solid:
+        batch.d[k] = 0.0f;
+        break;
+      case Block::mixed:
+        batch.mixed.push_back(static_cast<std::uint32_t>(k));
+        break;
     }
   }
-#else
-  for (std::size_t i = 0; i < NearestStencil::kPadded; ++i) {
-    const double x = ref.x() + stencil.x[i] + kNearestHalf;
-    const double y = ref.y() + stencil.y[i] + kNearestHalf;
-    const double z = ref.z() + stencil.z[i] + kNearestHalf;
-    const bool on = x >= 0 && y >= 0 && z >= 0 && x < m_[0] && y < m_[1] && z < m_[2];
-    voxel[i] = on ? static_cast<std::int32_t>(x) + iy * static_cast<std::int32_t>(y) +
-                        iz * static_cast<std::int32_t>(z)
-                  : 0;
+  read_points(batch, stencil);
+}
+
+// Four nodes per vector, the lanes doing the scalar read_points' operations in its order: the
+// additions and the floor are exact IEEE operations, the voxel index is an exact integer in
+// double, and each lane sums its own 19 values in stencil order.
+void ReferencePorosity::read_points(NearestBatch& batch, const NearestStencil& stencil) const {
+  const std::vector<std::uint32_t>& mixed = batch.mixed;
+  std::size_t k = 0;
+#if defined(__AVX2__)
+  const float* base = fluid_.data() + fluid_origin_;
+  const __m256d half = _mm256_set1_pd(kNearestHalf), zero = _mm256_setzero_pd();
+  const __m256d all = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
+  const __m128 ones = _mm_castsi128_ps(_mm_set1_epi32(-1));
+  const __m256d sy = _mm256_set1_pd(static_cast<double>(stride_[0]));
+  const __m256d sz = _mm256_set1_pd(static_cast<double>(stride_[1]));
+  for (; k + 4 <= mixed.size(); k += 4) {
+    const __m128i node = _mm_loadu_si128(reinterpret_cast<const __m128i*>(&mixed[k]));
+    // Masked gathers with a defined source: the plain ones read an undefined register, which
+    // GCC reports as maybe-uninitialized.
+    const __m256d x = _mm256_mask_i32gather_pd(zero, batch.x.data(), node, all, 8);
+    const __m256d y = _mm256_mask_i32gather_pd(zero, batch.y.data(), node, all, 8);
+    const __m256d z = _mm256_mask_i32gather_pd(zero, batch.z.data(), node, all, 8);
+    __m128 fluid = _mm_setzero_ps();
+    for (std::size_t i = 0; i < NearestStencil::kPoints; ++i) {
+      const __m256d px =
+          _mm256_floor_pd(_mm256_add_pd(_mm256_add_pd(x, _mm256_set1_pd(stencil.x[i])), half));
+      const __m256d py =
+          _mm256_floor_pd(_mm256_add_pd(_mm256_add_pd(y, _mm256_set1_pd(stencil.y[i])), half));
+      const __m256d pz =
+          _mm256_floor_pd(_mm256_add_pd(_mm256_add_pd(z, _mm256_set1_pd(stencil.z[i])), half));
+      const __m128i voxel =
+          _mm256_cvtpd_epi32(_mm256_fmadd_pd(pz, sz, _mm256_fmadd_pd(py, sy, px)));
+      fluid = _mm_add_ps(fluid, _mm_mask_i32gather_ps(_mm_setzero_ps(), base, voxel, ones, 4));
+    }
+    alignas(16) std::array<float, 4> d;
+    _mm_store_ps(d.data(), _mm_div_ps(fluid, _mm_set1_ps(19.0f)));
+    for (std::size_t l = 0; l < 4; ++l) batch.d[mixed[k + l]] = d[l];
   }
 #endif
-  // Summed in stencil order: the same bits as the point-by-point sum.
-  float fluid = 0;
-  for (int i = 0; i < NearestStencil::kPoints; ++i)
-    fluid += fluid_[static_cast<std::size_t>(voxel[static_cast<std::size_t>(i)])];
-  return fluid / 19.0f;  // as the averaged lattice: exactly 0 or 1 at the ends
+  for (; k < mixed.size(); ++k) {
+    const std::uint32_t node = mixed[k];
+    batch.d[node] = read_points(batch.x[node], batch.y[node], batch.z[node], stencil);
+  }
 }
 
 }  // namespace lbdem::hlbm

@@ -57,6 +57,26 @@ struct NearestStencil {
   alignas(32) std::array<double, kPadded> x{}, y{}, z{};
 };
 
+// Nodes for a batched nearest lookup: their reference-lattice coordinates, one array per axis
+// (the caller fills them), and their porosity (written by ReferencePorosity::nearest). `mixed`
+// is the lookup's scratch: the nodes that need their 19 points.
+struct NearestBatch {
+  std::vector<double> x, y, z;
+  std::vector<float> d;
+  std::vector<std::uint32_t> mixed;
+  void clear() {
+    x.clear();
+    y.clear();
+    z.clear();
+  }
+  void push(double px, double py, double pz) {
+    x.push_back(px);
+    y.push_back(py);
+    z.push_back(pz);
+  }
+  std::size_t size() const { return x.size(); }
+};
+
 // "trilinear" or "nearest" (the scene's fluid.porosity_lookup, already validated).
 PorosityLookup porosity_lookup_from(const std::string& name);
 
@@ -71,6 +91,9 @@ class ReferencePorosity {
   // fluid; stencil[i] is the lattice-frame offset h c_i in reference-lattice coordinates
   // (R^T c_i). Exactly 0 or 1 when all 19 agree.
   double nearest(const Eigen::Vector3d& ref, const NearestStencil& stencil) const;
+  // The same for every node of a batch (sets batch.d), bit for bit what the single-node lookup
+  // gives: the nodes whose block is mixed read their points several nodes at a time.
+  void nearest(NearestBatch& batch, const NearestStencil& stencil) const;
 
   // Reference-lattice coordinates of a shape-frame point p (m): ref = p / h + shift().
   double spacing() const { return h_; }
@@ -89,16 +112,34 @@ class ReferencePorosity {
   Eigen::Vector3d shift_ = Eigen::Vector3d::Zero();
   std::array<int, 3> m_{0, 0, 0};  // padded extents
   std::vector<float> smooth_;      // averaged porosity, padded lattice, x fastest
-  std::vector<float> fluid_;       // fluid fraction of each voxel (1 - fill), same lattice
+  // Fluid fraction of each voxel (1 - fill) on the padded lattice grown by kPointPad more fluid
+  // layers: every stencil point of a node whose nearest voxel is on the padded lattice reads
+  // it without a range check (components of R^T c_i are below 2 voxels). fluid_origin_ is the
+  // index of padded voxel (0, 0, 0), stride_ the steps in y and z.
+  static constexpr int kPointPad = 2;
+  std::vector<float> fluid_;
+  std::ptrdiff_t fluid_origin_ = 0;
+  std::array<std::ptrdiff_t, 2> stride_{0, 0};
   // Per voxel: are the voxels within Chebyshev distance 2 (outside the lattice: fluid) all
   // fluid or all solid? Every stencil point of a node lies within 2 of the node's nearest voxel.
   std::vector<Block> block_;
   double support_radius_ = 0;
   double surface_radius_ = 0;
 
-  // The nearest lookup's 19 loads (the uniform-block shortcut aside), out of line so that the
+  // Block class of the nearest voxel of a point (reference coordinates, kNearestHalf added);
+  // a point off the padded lattice is fluid.
+  Block block_at(double x, double y, double z) const {
+    if (!(x >= 0 && y >= 0 && z >= 0 && x < m_[0] && y < m_[1] && z < m_[2])) return Block::fluid;
+    const std::size_t sy = static_cast<std::size_t>(m_[0]);
+    const std::size_t sz = sy * static_cast<std::size_t>(m_[1]);
+    return block_[static_cast<std::size_t>(x) + sy * static_cast<std::size_t>(y) +
+                  sz * static_cast<std::size_t>(z)];
+  }
+  // The nearest lookup's 19 loads for a node of a mixed block, out of line so that the
   // shortcut inlines into the update loops.
-  double read_points(const Eigen::Vector3d& ref, const NearestStencil& stencil) const;
+  float read_points(double x, double y, double z, const NearestStencil& stencil) const;
+  // The same for the nodes batch.mixed of a batch, several at a time where AVX2 is there.
+  void read_points(NearestBatch& batch, const NearestStencil& stencil) const;
 
   float value(int i, int j, int k) const {
     return smooth_[static_cast<std::size_t>(i) +
@@ -140,18 +181,15 @@ inline double ReferencePorosity::at(const Eigen::Vector3d& ref) const {
 // result is the 19-point sum's bit for bit.
 inline double ReferencePorosity::nearest(const Eigen::Vector3d& ref,
                                          const NearestStencil& stencil) const {
-  const std::size_t sy = static_cast<std::size_t>(m_[0]);
-  const std::size_t sz = sy * static_cast<std::size_t>(m_[1]);
-  {
-    const double x = ref.x() + kNearestHalf, y = ref.y() + kNearestHalf, z = ref.z() + kNearestHalf;
-    // Outside the padded lattice every point falls outside it or in its two fluid layers.
-    if (!(x >= 0 && y >= 0 && z >= 0 && x < m_[0] && y < m_[1] && z < m_[2])) return 1.0;
-    const Block b = block_[static_cast<std::size_t>(x) + sy * static_cast<std::size_t>(y) +
-                           sz * static_cast<std::size_t>(z)];
-    if (b == Block::fluid) return 1.0;
-    if (b == Block::solid) return 0.0;
+  switch (block_at(ref.x() + kNearestHalf, ref.y() + kNearestHalf, ref.z() + kNearestHalf)) {
+    case Block::fluid:
+      return 1.0;
+    case Block::solid:
+      return 0.0;
+    case Block::mixed:
+      break;
   }
-  return read_points(ref, stencil);
+  return read_points(ref.x(), ref.y(), ref.z(), stencil);
 }
 
 }  // namespace lbdem::hlbm
