@@ -124,7 +124,7 @@ void BodyField<T>::tabulate_offsets(const Tracked& t) {
 template <class T>
 void BodyField<T>::queue_row(const Tracked& t, std::size_t row, const std::uint64_t* bits) {
   const Window& w = window_;
-  const std::size_t nx = w.l[0].size(), ny = w.l[1].size();
+  const std::size_t ny = w.l[1].size();
   const int y = w.l[1][row % ny], z = w.l[2][row / ny];
   const Eigen::Matrix3d& m = t.to_ref;
   const Eigen::Vector3d& shift = shapes_[static_cast<std::size_t>(t.shape)].shift();
@@ -133,14 +133,22 @@ void BodyField<T>::queue_row(const Tracked& t, std::size_t row, const std::uint6
   const double b1 = std::fma(m(1, 1), r1, std::fma(m(1, 2), r2, shift[1]));
   const double b2 = std::fma(m(2, 1), r1, std::fma(m(2, 2), r2, shift[2]));
   const auto first = static_cast<std::uint32_t>(sub_.box.index(0, y, z));
+  std::size_t count = batch_.count, added = 0;
   for (std::size_t k = 0; k < static_cast<std::size_t>(w.words); ++k)
-    for (std::uint64_t left = bits[k]; left; left &= left - 1) {
+    added += static_cast<std::size_t>(std::popcount(bits[k]));
+  queue_.resize(count + added);
+  batch_.resize(count + added);
+  for (std::size_t k = 0; k < static_cast<std::size_t>(w.words); ++k)
+    for (std::uint64_t left = bits[k]; left; left &= left - 1, ++count) {
       const std::size_t i = 64 * k + static_cast<std::size_t>(std::countr_zero(left));
       const int x = w.l[0][i];
       const double r0 = rel_[0][static_cast<std::size_t>(x)];
-      batch_.push(std::fma(m(0, 0), r0, b0), std::fma(m(1, 0), r0, b1), std::fma(m(2, 0), r0, b2));
-      queue_.cell.push_back(first + static_cast<std::uint32_t>(x));
-      queue_.window.push_back(static_cast<std::uint32_t>(row * nx + i));
+      batch_.x[count] = std::fma(m(0, 0), r0, b0);
+      batch_.y[count] = std::fma(m(1, 0), r0, b1);
+      batch_.z[count] = std::fma(m(2, 0), r0, b2);
+      queue_.cell[count] = first + static_cast<std::uint32_t>(x);
+      queue_.row[count] = static_cast<std::uint32_t>(row);
+      queue_.i[count] = static_cast<std::uint32_t>(i);
     }
 }
 
@@ -149,15 +157,17 @@ template <class T>
 void BodyField<T>::evaluate_queue(std::int32_t slot, UpdateStats& stats) {
   const Tracked& t = tracked_[static_cast<std::size_t>(slot)];
   const ReferencePorosity& ref = shapes_[static_cast<std::size_t>(t.shape)];
-  const std::size_t n = queue_.cell.size();
+  const std::size_t n = batch_.count;
   stats.evaluated += n;
   if (lookup_ == PorosityLookup::nearest) {
     ref.nearest(batch_, t.stencil);
   } else {
-    batch_.d.resize(n);
-    for (std::size_t k = 0; k < n; ++k)
+    batch_.mixed_count = n;
+    for (std::size_t k = 0; k < n; ++k) {
       batch_.d[k] =
           static_cast<float>(ref.at(Eigen::Vector3d(batch_.x[k], batch_.y[k], batch_.z[k])));
+      batch_.mixed[k] = static_cast<std::uint32_t>(k);
+    }
   }
   for (std::size_t k = 0; k < n; ++k) mark_interior(slot, queue_.cell[k], batch_.d[k], stats);
 }
@@ -212,15 +222,15 @@ void BodyField<T>::scan(std::int32_t slot, std::vector<BandCell>& band, UpdateSt
   const std::size_t nx = w.l[0].size(), ny = w.l[1].size();
   std::vector<std::uint64_t> all(static_cast<std::size_t>(w.words), 0);
   for (std::size_t i = 0; i < nx; ++i) all[i / 64] |= std::uint64_t{1} << (i % 64);
-  queue_.clear();
-  batch_.clear();
+  batch_.resize(0);
   for (std::size_t row = 0; row < w.rows; ++row) queue_row(t, row, all.data());
   evaluate_queue(slot, stats);
-  for (std::size_t k = 0; k < queue_.cell.size(); ++k) {
+  for (std::uint32_t k : batch_.mixed_nodes()) {  // in queue order, so in cell order
     const float d = batch_.d[k];
     if (d > 0.0f && d < 1.0f) {
-      const std::size_t row = queue_.window[k] / nx, i = queue_.window[k] % nx;
-      band.push_back({queue_.cell[k], d, local(w.l[0][i], w.l[1][row % ny], w.l[2][row / ny])});
+      const std::size_t row = queue_.row[k];
+      band.push_back(
+          {queue_.cell[k], d, local(w.l[0][queue_.i[k]], w.l[1][row % ny], w.l[2][row / ny])});
       touched_.push_back(queue_.cell[k]);
     }
   }
@@ -376,8 +386,7 @@ void BodyField<T>::follow_band(std::int32_t slot, std::vector<BandCell>& band, U
     if (w.candidate_rows.empty()) break;
 
     // Evaluate the candidates not evaluated yet.
-    queue_.clear();
-    batch_.clear();
+    batch_.resize(0);
     for (std::size_t row : w.candidate_rows) {
       w.in_candidates[row] = 0;
       bool any = false;
@@ -394,13 +403,13 @@ void BodyField<T>::follow_band(std::int32_t slot, std::vector<BandCell>& band, U
     evaluate_queue(slot, stats);
 
     // Band cells join the band; those not in the old band are the next frontier.
-    for (std::size_t k = 0; k < queue_.cell.size(); ++k) {
+    for (std::uint32_t k : batch_.mixed_nodes()) {
       const float d = batch_.d[k];
       if (!(d > 0.0f && d < 1.0f)) continue;
-      const std::size_t cell = queue_.window[k], row = cell / nx, i = cell % nx;
+      const std::size_t row = queue_.row[k], i = queue_.i[k];
       const std::size_t word = row * words + i / 64;
       const std::uint64_t bit = std::uint64_t{1} << (i % 64);
-      w.d[cell] = d;
+      w.d[row * nx + i] = d;
       w.band[word] |= bit;
       if (!(w.old[word] & bit)) mark(w.frontier, w.in_frontier, w.frontier_rows, i, row);
     }

@@ -14,6 +14,7 @@
 //                  [&](int i, CellIndex c) { return solver.population(i, c); }, step);
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <span>
@@ -151,12 +152,12 @@ class BodyField {
   std::unordered_map<std::int64_t, std::int32_t> slots_;
   std::vector<std::uint32_t> touched_;  // cells evaluated in this update
   Window window_;                       // band search scratch
-  // Cells to evaluate as one batch: cell index and window cell (row * nx + i).
+  // The cells of batch_: cell index and window row and x index (grown with batch_).
   struct Queue {
-    std::vector<std::uint32_t> cell, window;
-    void clear() {
-      cell.clear();
-      window.clear();
+    std::vector<std::uint32_t> cell, row, i;
+    void resize(std::size_t n) {
+      if (cell.size() < n)
+        for (auto* v : {&cell, &row, &i}) v->resize(std::max(n, 2 * v->size()));
     }
   };
   Queue queue_;

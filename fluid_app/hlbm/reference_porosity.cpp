@@ -90,7 +90,8 @@ ReferencePorosity::ReferencePorosity(const Voxels& voxels) : h_(voxels.h) {
           }
         }
   }
-  block_.resize(fluid.size());
+  // Three bytes more: the batched lookup reads four bytes at a voxel's class.
+  block_.assign(fluid.size() + 3, Block::fluid);
   for (std::size_t v = 0; v < fluid.size(); ++v)
     block_[v] = lo[v] == 1.0f ? Block::fluid : hi[v] == 0.0f ? Block::solid : Block::mixed;
 
@@ -124,24 +125,57 @@ float ReferencePorosity::read_points(double x, double y, double z,
   return fluid / 19.0f;  // as the averaged lattice: exactly 0 or 1 at the ends
 }
 
+// The block class of every node (four at a time where AVX2 is there, the same additions,
+// comparisons and truncations as block_at), then the 19 points of the mixed ones.
 void ReferencePorosity::nearest(NearestBatch& batch, const NearestStencil& stencil) const {
-  const std::size_t n = batch.size();
-  batch.d.resize(n);
-  batch.mixed.clear();
-  for (std::size_t k = 0; k < n; ++k) {
-    switch (
-        block_at(batch.x[k] + kNearestHalf, batch.y[k] + kNearestHalf, batch.z[k] + kNearestHalf)) {
-      case Block::fluid:
-        batch.d[k] = 1.0f;
-        break;
-      case Block::solid:
-        batch.d[k] = 0.0f;
-        break;
-      case Block::mixed:
-        batch.mixed.push_back(static_cast<std::uint32_t>(k));
-        break;
+  const std::size_t n = batch.count;
+  std::size_t count = 0, k = 0;
+#if defined(__AVX2__)
+  const __m256d half = _mm256_set1_pd(kNearestHalf), zero = _mm256_setzero_pd();
+  const __m256d mx = _mm256_set1_pd(m_[0]), my = _mm256_set1_pd(m_[1]), mz = _mm256_set1_pd(m_[2]);
+  const __m128i sy = _mm_set1_epi32(m_[0]), sz = _mm_set1_epi32(m_[0] * m_[1]);
+  const __m128i byte = _mm_set1_epi32(0xff), fluid = _mm_set1_epi32(int(Block::fluid));
+  const __m128i mixed = _mm_set1_epi32(int(Block::mixed)), lanes = _mm_setr_epi32(1, 2, 4, 8);
+  const auto* blocks = reinterpret_cast<const int*>(block_.data());
+  for (; k + 4 <= n; k += 4) {
+    const __m256d x = _mm256_add_pd(_mm256_loadu_pd(&batch.x[k]), half);
+    const __m256d y = _mm256_add_pd(_mm256_loadu_pd(&batch.y[k]), half);
+    const __m256d z = _mm256_add_pd(_mm256_loadu_pd(&batch.z[k]), half);
+    const __m256d on = _mm256_and_pd(
+        _mm256_and_pd(
+            _mm256_and_pd(_mm256_cmp_pd(x, zero, _CMP_GE_OQ), _mm256_cmp_pd(x, mx, _CMP_LT_OQ)),
+            _mm256_and_pd(_mm256_cmp_pd(y, zero, _CMP_GE_OQ), _mm256_cmp_pd(y, my, _CMP_LT_OQ))),
+        _mm256_and_pd(_mm256_cmp_pd(z, zero, _CMP_GE_OQ), _mm256_cmp_pd(z, mz, _CMP_LT_OQ)));
+    const __m128i i = _mm256_cvttpd_epi32(_mm256_and_pd(x, on));
+    const __m128i j = _mm256_cvttpd_epi32(_mm256_and_pd(y, on));
+    const __m128i l = _mm256_cvttpd_epi32(_mm256_and_pd(z, on));
+    const __m128i voxel =
+        _mm_add_epi32(_mm_add_epi32(i, _mm_mullo_epi32(j, sy)), _mm_mullo_epi32(l, sz));
+    // Four bytes read at each voxel's byte (block_ is padded), the first kept; off the padded
+    // lattice: fluid.
+    const __m128i read = _mm_and_si128(
+        _mm_mask_i32gather_epi32(_mm_setzero_si128(), blocks, voxel, _mm_set1_epi32(-1), 1), byte);
+    const __m128i on_bits = _mm_set1_epi32(_mm256_movemask_pd(on));
+    const __m128i inside = _mm_cmpeq_epi32(_mm_and_si128(on_bits, lanes), lanes);  // -1 or 0
+    const __m128i cls = _mm_blendv_epi8(fluid, read, inside);
+    _mm_storeu_ps(&batch.d[k],
+                  _mm_castsi128_ps(_mm_and_si128(_mm_cmpeq_epi32(cls, fluid),
+                                                 _mm_castps_si128(_mm_set1_ps(1.0f)))));
+    const int m = _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(cls, mixed)));
+    for (int lane = 0; lane < 4; ++lane) {
+      batch.mixed[count] = static_cast<std::uint32_t>(k) + static_cast<std::uint32_t>(lane);
+      count += static_cast<std::size_t>((m >> lane) & 1);
     }
   }
+#endif
+  for (; k < n; ++k) {
+    const Block b =
+        block_at(batch.x[k] + kNearestHalf, batch.y[k] + kNearestHalf, batch.z[k] + kNearestHalf);
+    batch.d[k] = b == Block::fluid ? 1.0f : 0.0f;
+    batch.mixed[count] = static_cast<std::uint32_t>(k);
+    count += b == Block::mixed;
+  }
+  batch.mixed_count = count;
   read_points(batch, stencil);
 }
 
@@ -149,7 +183,7 @@ void ReferencePorosity::nearest(NearestBatch& batch, const NearestStencil& stenc
 // additions and the floor are exact IEEE operations, the voxel index is an exact integer in
 // double, and each lane sums its own 19 values in stencil order.
 void ReferencePorosity::read_points(NearestBatch& batch, const NearestStencil& stencil) const {
-  const std::vector<std::uint32_t>& mixed = batch.mixed;
+  const std::span<const std::uint32_t> mixed = batch.mixed_nodes();
   std::size_t k = 0;
 #if defined(__AVX2__)
   const float* base = fluid_.data() + fluid_origin_;
@@ -158,14 +192,14 @@ void ReferencePorosity::read_points(NearestBatch& batch, const NearestStencil& s
   const __m128 ones = _mm_castsi128_ps(_mm_set1_epi32(-1));
   const __m256d sy = _mm256_set1_pd(static_cast<double>(stride_[0]));
   const __m256d sz = _mm256_set1_pd(static_cast<double>(stride_[1]));
-  for (; k + 4 <= mixed.size(); k += 4) {
-    const __m128i node = _mm_loadu_si128(reinterpret_cast<const __m128i*>(&mixed[k]));
+  // The voxels of the 19 points of four nodes.
+  auto voxels = [&](std::size_t first, __m128i* voxel) {
+    const __m128i node = _mm_loadu_si128(reinterpret_cast<const __m128i*>(&mixed[first]));
     // Masked gathers with a defined source: the plain ones read an undefined register, which
     // GCC reports as maybe-uninitialized.
     const __m256d x = _mm256_mask_i32gather_pd(zero, batch.x.data(), node, all, 8);
     const __m256d y = _mm256_mask_i32gather_pd(zero, batch.y.data(), node, all, 8);
     const __m256d z = _mm256_mask_i32gather_pd(zero, batch.z.data(), node, all, 8);
-    __m128 fluid = _mm_setzero_ps();
     for (std::size_t i = 0; i < NearestStencil::kPoints; ++i) {
       const __m256d px =
           _mm256_floor_pd(_mm256_add_pd(_mm256_add_pd(x, _mm256_set1_pd(stencil.x[i])), half));
@@ -173,13 +207,26 @@ void ReferencePorosity::read_points(NearestBatch& batch, const NearestStencil& s
           _mm256_floor_pd(_mm256_add_pd(_mm256_add_pd(y, _mm256_set1_pd(stencil.y[i])), half));
       const __m256d pz =
           _mm256_floor_pd(_mm256_add_pd(_mm256_add_pd(z, _mm256_set1_pd(stencil.z[i])), half));
-      const __m128i voxel =
-          _mm256_cvtpd_epi32(_mm256_fmadd_pd(pz, sz, _mm256_fmadd_pd(py, sy, px)));
-      fluid = _mm_add_ps(fluid, _mm_mask_i32gather_ps(_mm_setzero_ps(), base, voxel, ones, 4));
+      voxel[i] = _mm256_cvtpd_epi32(_mm256_fmadd_pd(pz, sz, _mm256_fmadd_pd(py, sy, px)));
     }
+  };
+  auto store = [&](std::size_t first, __m128 fluid) {
     alignas(16) std::array<float, 4> d;
     _mm_store_ps(d.data(), _mm_div_ps(fluid, _mm_set1_ps(19.0f)));
-    for (std::size_t l = 0; l < 4; ++l) batch.d[mixed[k + l]] = d[l];
+    for (std::size_t l = 0; l < 4; ++l) batch.d[mixed[first + l]] = d[l];
+  };
+  // Eight nodes per round, two independent sums, the indices computed before the loads.
+  __m128i va[NearestStencil::kPoints], vb[NearestStencil::kPoints];
+  for (; k + 8 <= mixed.size(); k += 8) {
+    voxels(k, va);
+    voxels(k + 4, vb);
+    __m128 fa = _mm_setzero_ps(), fb = _mm_setzero_ps();
+    for (std::size_t i = 0; i < NearestStencil::kPoints; ++i) {
+      fa = _mm_add_ps(fa, _mm_mask_i32gather_ps(_mm_setzero_ps(), base, va[i], ones, 4));
+      fb = _mm_add_ps(fb, _mm_mask_i32gather_ps(_mm_setzero_ps(), base, vb[i], ones, 4));
+    }
+    store(k, fa);
+    store(k + 4, fb);
   }
 #endif
   for (; k < mixed.size(); ++k) {

@@ -22,9 +22,11 @@
 //   (0 < d < 1) is narrower than the trilinear one.
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -57,24 +59,26 @@ struct NearestStencil {
   alignas(32) std::array<double, kPadded> x{}, y{}, z{};
 };
 
-// Nodes for a batched nearest lookup: their reference-lattice coordinates, one array per axis
-// (the caller fills them), and their porosity (written by ReferencePorosity::nearest). `mixed`
-// is the lookup's scratch: the nodes that need their 19 points.
+// Nodes for a batched lookup: `count` nodes with their reference-lattice coordinates, one array
+// per axis (the caller fills them), their porosity, and the `mixed_count` nodes whose porosity
+// may lie strictly between 0 and 1 (ReferencePorosity::nearest: those whose block is mixed), in
+// batch order. The arrays only grow, so that refilling a batch clears no memory.
 struct NearestBatch {
+  std::size_t count = 0, mixed_count = 0;
   std::vector<double> x, y, z;
   std::vector<float> d;
-  std::vector<std::uint32_t> mixed;
-  void clear() {
-    x.clear();
-    y.clear();
-    z.clear();
+  std::vector<std::uint32_t> mixed;  // 4 entries more, for branch-free appends
+  // Room for n nodes; keeps the first `count`.
+  void resize(std::size_t n) {
+    if (x.size() < n) {
+      const std::size_t c = std::max(n, 2 * x.size());
+      for (auto* v : {&x, &y, &z}) v->resize(c);
+      d.resize(c);
+      mixed.resize(c + 4);
+    }
+    count = n;
   }
-  void push(double px, double py, double pz) {
-    x.push_back(px);
-    y.push_back(py);
-    z.push_back(pz);
-  }
-  std::size_t size() const { return x.size(); }
+  std::span<const std::uint32_t> mixed_nodes() const { return {mixed.data(), mixed_count}; }
 };
 
 // "trilinear" or "nearest" (the scene's fluid.porosity_lookup, already validated).
