@@ -23,6 +23,8 @@
 #include "fluid_app/coupling/state_feed.hpp"
 #include "fluid_app/fluid_run.hpp"
 #include "fluid_app/hlbm/body_field.hpp"
+#include "fluid_app/hlbm/momentum_exchange.hpp"
+#include "fluid_app/hlbm/penalty_loads.hpp"
 #include "fluid_app/output/run_watch.hpp"
 #include "fluid_app/parallel/balance.hpp"
 
@@ -51,11 +53,12 @@ FluidGeometry geometry_of(const Scene& scene, const LocalBox& box,
 // lowest new rank that tracks the body (the DEM sums the partials: the same load up to
 // round-off).
 template <class T>
-void restore_covered(hlbm::BodyField<T>& bodies, const std::vector<CoveredRecord>& records,
-                     bool same_layout, int rank, MPI_Comm comm) {
-  using Memory = typename hlbm::BodyField<T>::CoveredMemory;
+void restore_covered(hlbm::PenaltyLoads<T>& loads, const hlbm::BodyField<T>& bodies,
+                     const std::vector<CoveredRecord>& records, bool same_layout, int rank,
+                     MPI_Comm comm) {
+  using Memory = typename hlbm::PenaltyLoads<T>::CoveredMemory;
   std::map<std::int64_t, Memory> mine;
-  for (const auto& m : bodies.covered_memory()) mine[m.id] = Memory{m.id, {}, {}};
+  for (const auto& m : loads.covered_memory(bodies)) mine[m.id] = Memory{m.id, {}, {}};
   std::int64_t ids = 0;
   for (const CoveredRecord& r : records) ids = std::max(ids, r.id + 1);
   std::vector<int> lowest(static_cast<std::size_t>(ids), std::numeric_limits<int>::max());
@@ -79,7 +82,7 @@ void restore_covered(hlbm::BodyField<T>& bodies, const std::vector<CoveredRecord
       it->second.covered_moment[a] += r.covered_moment[a];
     }
   }
-  for (const auto& [id, m] : mine) bodies.restore_covered(m);
+  for (const auto& [id, m] : mine) loads.restore_covered(bodies, m);
 }
 
 // This rank's work at the end of the run: its cells, those a body covers (d < 1), split into
@@ -164,6 +167,7 @@ int run_typed(AppContext& ctx) {
   hlbm::LatticeFrame frame{Eigen::Vector3d::Zero(), scene.fluid->units};
   hlbm::BodyField<T> bodies(shapes, sub, frame, solver.porous(),
                             hlbm::porosity_lookup_from(scene.fluid->porosity_lookup));
+  hlbm::PenaltyLoads<T> penalty_loads;
   const SettlingForce settling = settling_force(scene, shapes);
   if (settling.active) {
     // The controller (if any) adds its correction to this feed-forward (or, with
@@ -203,15 +207,15 @@ int run_typed(AppContext& ctx) {
   if (audit && !restart) audit->write(0, 0.0, solver, first);
   bodies.update(first);
   if (restart)
-    restore_covered(bodies, restart->covered, restart->header.fluid_ranks == ctx.size, solver_rank,
-                    solver.comm());
+    restore_covered(penalty_loads, bodies, restart->covered,
+                    restart->header.fluid_ranks == ctx.size, solver_rank, solver.comm());
   else
     run.start();
   // Every checkpoint holds a state that passed the stability check.
   watch.check_also_at([&](long step) { return session.checkpoint_at(step); });
   session.on_checkpoint([&](const std::string& prefix, const CheckpointHeader& header) {
     std::vector<CoveredRecord> covered;
-    for (const auto& m : bodies.covered_memory())
+    for (const auto& m : penalty_loads.covered_memory(bodies))
       covered.push_back({solver_rank, m.id, m.covered, m.covered_moment});
     SeriesLengths lengths;
     lengths.series = watch.series_bytes();
@@ -223,9 +227,10 @@ int run_typed(AppContext& ctx) {
     const std::int64_t step = session.next_step();
     session.timed("lattice", [&] { run.step(); });
     const auto loads = session.timed("porosity + momentum exchange", [&] {
-      return penalty ? bodies.penalty_loads(step)
-                     : bodies.momentum_exchange(
-                           [&](int i, CellIndex c) { return solver.population(i, c); }, step);
+      return penalty
+                 ? penalty_loads.loads(bodies, step)
+                 : hlbm::momentum_exchange(
+                       bodies, [&](int i, CellIndex c) { return solver.population(i, c); }, step);
     });
     feed.send(step, loads);
     // The audit, the agreement and a checkpoint need the states of this very step (a brief

@@ -489,8 +489,6 @@ UpdateStats BodyField<T>::update(std::span<const BodyState> states, UpdateMode m
     Tracked& t = tracked_[slot];
     if (t.id < 0 || std::binary_search(ids.begin(), ids.end(), t.id)) continue;
     if (mode == UpdateMode::incremental) remove(static_cast<std::int32_t>(slot), stats);
-    if (t.covered != std::array<double, 3>{} || t.covered_moment != std::array<double, 3>{})
-      departed_.push_back(t.id);
     slots_.erase(t.id);
     t = Tracked{};
     field_.bodies[slot] = PorousBody<T>{};
@@ -523,8 +521,6 @@ UpdateStats BodyField<T>::update(std::span<const BodyState> states, UpdateMode m
     next.id = s.id;
     next.shape = s.shape;
     set_pose(next, s);
-    next.covered = t.covered;  // the load's Q^{n-1} (zero for a fresh slot)
-    next.covered_moment = t.covered_moment;
 
     std::vector<BandCell> band;
     band.reserve(t.band.size() + t.band.size() / 8 + 16);  // the band changes little per step
@@ -553,53 +549,6 @@ UpdateStats BodyField<T>::update(std::span<const BodyState> states, UpdateMode m
   combine(order);
   field_.active = !slots_.empty();
   return stats;
-}
-
-template <class T>
-std::vector<BodyLoad> BodyField<T>::penalty_loads(std::int64_t step) {
-  if (!departed_.empty())
-    throw std::logic_error(
-        "BodyField: body " + std::to_string(departed_.front()) +
-        " was taken out of a fluid rank while it still covered cells there; its load would "
-        "lose the momentum of that fluid (raise coupling.margin)");
-  std::vector<BodyLoad> loads;
-  const std::size_t known = field_.exchange.size();
-  for (std::size_t s = 0; s < tracked_.size(); ++s) {
-    Tracked& t = tracked_[s];
-    if (t.id < 0) continue;
-    const PenaltyExchange e = s < known ? field_.exchange[s] : PenaltyExchange{};
-    BodyLoad load;
-    load.id = t.id;
-    load.step = step;
-    for (int a = 0; a < 3; ++a) {
-      const double f = -e.impulse[a] + (e.covered[a] - t.covered[a]);
-      const double m = -e.moment[a] + (e.covered_moment[a] - t.covered_moment[a]);
-      load.f[a] = f * frame_.units.force();
-      load.t[a] = m * frame_.units.torque();
-    }
-    t.covered = e.covered;
-    t.covered_moment = e.covered_moment;
-    loads.push_back(load);
-  }
-  return loads;
-}
-
-template <class T>
-std::vector<typename BodyField<T>::CoveredMemory> BodyField<T>::covered_memory() const {
-  std::vector<CoveredMemory> out;
-  for (const Tracked& t : tracked_)
-    if (t.id >= 0) out.push_back({t.id, t.covered, t.covered_moment});
-  return out;
-}
-
-template <class T>
-void BodyField<T>::restore_covered(const CoveredMemory& m) {
-  const std::int32_t slot = slot_of(m.id);
-  if (slot < 0)
-    throw std::out_of_range("restore_covered: body " + std::to_string(m.id) +
-                            " is not tracked on this fluid rank");
-  tracked_[std::size_t(slot)].covered = m.covered;
-  tracked_[std::size_t(slot)].covered_moment = m.covered_moment;
 }
 
 template class BodyField<double>;

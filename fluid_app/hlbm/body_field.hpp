@@ -1,17 +1,15 @@
 #pragma once
 // The fluid side of the bodies (homogenized LBM): turns the body states the coupler
 // delivers into the porosity field and body table the HLBM collision reads, keeping the
-// update cost proportional to the body surfaces, and integrates the hydrodynamic force and
-// torque on each body: by default from the penalization (docs/method.md Eqs. (13)-(15),
-// docs/method-loads.md), or by momentum exchange (Eqs. (9)-(10)). Conventions: docs/method.md,
-// "Bodies in the fluid: homogenized LBM".
+// update cost proportional to the body surfaces. Conventions: docs/method.md, "Bodies in the
+// fluid: homogenized LBM". The loads on the bodies are integrated elsewhere, from what this
+// field and the kernel leave: fluid_app/hlbm/penalty_loads.hpp (the default) and
+// fluid_app/hlbm/momentum_exchange.hpp.
 //
 // Use (one per fluid rank):
 //   hlbm::BodyField<T> bodies(shapes, {solver.box(), periodic}, {origin, units},
 //                             solver.porous());
-//   each step: bodies.update(states);  solver.step();
-//              auto loads = bodies.momentum_exchange(
-//                  [&](int i, CellIndex c) { return solver.population(i, c); }, step);
+//   each step: bodies.update(states);  solver.step();  (then the loads)
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -24,7 +22,6 @@
 #include "coupler_lib/coupling/packets.hpp"
 #include "coupler_lib/geometry/shape.hpp"
 #include "coupler_lib/scene/units.hpp"
-#include "fluid_app/hlbm/momentum_exchange.hpp"
 #include "fluid_app/hlbm/reference_porosity.hpp"
 #include "fluid_app/hlbm/subdomain.hpp"
 #include "fluid_app/porous_field.hpp"
@@ -80,38 +77,26 @@ class BodyField {
   // Porosity d_k of one body alone at a local cell (what the two-body rule combines).
   float body_porosity(std::int64_t id, CellIndex cell) const;
 
-  // Partial hydrodynamic force and torque (SI; torque about the centre of mass) on every
-  // body of the last update from the penalization itself (docs/method-loads.md):
-  //   F_k = -P_k^n + (Q_k^n - Q_k^{n-1}),  T_k = -M_k^n + (L_k^n - L_k^{n-1}),
-  // with the sums the kernel wrote in the last step (PorousField::exchange) over the cells
-  // this rank owns. Call once per step, after the solver step: it keeps Q^n for the next.
-  // Throws std::logic_error if a body left this rank while it still covered some of its
-  // cells (its last Q could then not be returned; the coupler's reach prevents it).
-  std::vector<BodyLoad> penalty_loads(std::int64_t step);
+  // The slots of the last update (field().body / field().bodies index them): how many, and
+  // the body id in each (-1: a free slot).
+  std::size_t slots() const { return tracked_.size(); }
+  std::int64_t id_of(std::int32_t slot) const {
+    return tracked_[static_cast<std::size_t>(slot)].id;
+  }
+  const LatticeFrame& frame() const { return frame_; }
 
-  // What penalty_loads keeps from one step to the next (Q^n, L^n of this rank's cells per
-  // tracked body), for checkpoints; restore_covered sets it for a tracked body after a
-  // restart's first update (throws std::out_of_range when the body is not tracked here).
-  struct CoveredMemory {
-    std::int64_t id = -1;
-    std::array<double, 3> covered{}, covered_moment{};
-  };
-  std::vector<CoveredMemory> covered_memory() const;
-  void restore_covered(const CoveredMemory& m);
-
-  // The same loads by momentum exchange over the boundary links of the cells this rank owns
-  // (the older method, fluid.loads: momentum_exchange; it misses the momentum of cells that
-  // enter or leave a moving body's band and the body force inside it).
-  // f(i, cell): post-stream population i at local cell `cell` (FluidSolver::population).
-  template <class Populations>
-  std::vector<BodyLoad> momentum_exchange(const Populations& f, std::int64_t step) const;
-
- private:
+  // A cell of a body's porous band (0 < d_k < 1): index, d_k, local coordinates.
   struct BandCell {
     std::uint32_t cell;
     float d;
     std::array<std::uint16_t, 3> l;  // local coordinates (no index division to recover them)
   };
+  // The band of the body in `slot` at the last update, in cell order.
+  std::span<const BandCell> band(std::int32_t slot) const {
+    return tracked_[static_cast<std::size_t>(slot)].band;
+  }
+
+ private:
   struct Tracked {
     std::int64_t id = -1;  // -1: free slot
     std::int32_t shape = 0;
@@ -121,8 +106,6 @@ class BodyField {
     // Nearest lookup: the lattice-frame stencil h c_i in reference coordinates (rot^T c_i).
     NearestStencil stencil;
     std::vector<BandCell> band;  // cells with 0 < d < 1
-    // Q and L of the last step (this rank's cells), for the difference in penalty_loads.
-    std::array<double, 3> covered{}, covered_moment{};
   };
 
   // The band search of one body runs on a window: the product of its support lists (local
@@ -162,7 +145,6 @@ class BodyField {
   };
   Queue queue_;
   NearestBatch batch_;  // the queued cells mapped into the reference lattice, and their porosity
-  std::vector<std::int64_t> departed_;  // bodies taken out in the last update with Q != 0
   // Minimum-image offset from the centre of the body being updated, per axis and local
   // coordinate (lattice units): tabulated once per body and update, read per evaluation.
   std::array<std::vector<double>, 3> rel_;
@@ -181,36 +163,6 @@ class BodyField {
   void combine(std::span<const std::int32_t> order);
   double displacement(const Tracked& t, const Tracked& next) const;
 };
-
-template <class T>
-template <class Populations>
-std::vector<BodyLoad> BodyField<T>::momentum_exchange(const Populations& f,
-                                                      std::int64_t step) const {
-  std::vector<BodyLoad> loads;
-  for (std::size_t s = 0; s < tracked_.size(); ++s) {
-    const Tracked& t = tracked_[s];
-    if (t.id < 0) continue;
-    const auto slot = static_cast<std::int32_t>(s);
-    // Interior cells (d = 0) never neighbour a cell outside the body (the smoothing is
-    // wider than a link, docs/method.md "Momentum exchange"), so the body's band holds all its
-    // boundary links.
-    LinkLoad sum;
-    for (const BandCell& b : t.band) {
-      const auto l = sub_.box.coords(b.cell);
-      if (field_.body[b.cell] == slot && sub_.box.interior(l[0], l[1], l[2]))
-        sum += link_load(sub_, field_, slot, CellIndex(b.cell), f);
-    }
-    BodyLoad load;
-    load.id = t.id;
-    load.step = step;
-    for (int a = 0; a < 3; ++a) {
-      load.f[a] = sum.force[a] * frame_.units.force();
-      load.t[a] = sum.torque[a] * frame_.units.torque();
-    }
-    loads.push_back(load);
-  }
-  return loads;
-}
 
 extern template class BodyField<double>;
 extern template class BodyField<float>;

@@ -24,6 +24,10 @@
 // opposite signs.
 #include <array>
 #include <cstdint>
+#include <vector>
+
+#include "coupler_lib/coupling/packets.hpp"
+#include "fluid_app/hlbm/body_field.hpp"
 
 #include "fluid_app/hlbm/subdomain.hpp"
 #include "fluid_app/lattice/d3q19.hpp"
@@ -82,6 +86,42 @@ LinkLoad link_load(const Subdomain& sub, const PorousField<T>& field, std::int32
                 r[2] * out.force[0] - r[0] * out.force[2],
                 r[0] * out.force[1] - r[1] * out.force[0]};
   return out;
+}
+
+// The loads on every body of a BodyField's last update by momentum exchange over the boundary
+// links of the cells this rank owns (fluid.loads: momentum_exchange; it misses the momentum of
+// cells that enter or leave a moving body's band and the body force inside it), SI, torque
+// about the centre of mass, in slot order. f(i, cell): post-stream population i at local cell
+// `cell` (FluidSolver::population).
+template <class T, class Populations>
+std::vector<BodyLoad> momentum_exchange(const BodyField<T>& bodies, const Populations& f,
+                                        std::int64_t step) {
+  const Subdomain& sub = bodies.subdomain();
+  const PorousField<T>& field = bodies.field();
+  const UnitConverter& units = bodies.frame().units;
+  std::vector<BodyLoad> loads;
+  for (std::size_t s = 0; s < bodies.slots(); ++s) {
+    const auto slot = static_cast<std::int32_t>(s);
+    if (bodies.id_of(slot) < 0) continue;
+    // Interior cells (d = 0) never neighbour a cell outside the body (the smoothing is
+    // wider than a link, docs/method.md "Momentum exchange"), so the body's band holds all its
+    // boundary links.
+    LinkLoad sum;
+    for (const auto& b : bodies.band(slot)) {
+      const auto l = sub.box.coords(b.cell);
+      if (field.body[b.cell] == slot && sub.box.interior(l[0], l[1], l[2]))
+        sum += link_load(sub, field, slot, CellIndex(b.cell), f);
+    }
+    BodyLoad load;
+    load.id = bodies.id_of(slot);
+    load.step = step;
+    for (int a = 0; a < 3; ++a) {
+      load.f[a] = sum.force[a] * units.force();
+      load.t[a] = sum.torque[a] * units.torque();
+    }
+    loads.push_back(load);
+  }
+  return loads;
 }
 
 }  // namespace lbdem::hlbm

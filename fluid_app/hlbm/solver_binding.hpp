@@ -12,7 +12,7 @@ Subdomain subdomain_of(const FluidSolver<T>& solver, const FluidParams& params) 
   return {solver.box(), {params.periodic(0), params.periodic(1), params.periodic(2)}};
 }
 
-// f(i, cell) for BodyField::momentum_exchange; the solver must outlive the accessor.
+// f(i, cell) for hlbm::momentum_exchange; the solver must outlive the accessor.
 template <class T>
 auto populations_of(const FluidSolver<T>& solver) {
   return [&solver](int i, CellIndex cell) { return solver.population(i, cell); };

@@ -11,6 +11,8 @@
 #include "coupler_lib/coupling/packets.hpp"
 #include "coupler_lib/geometry/shape.hpp"
 #include "fluid_app/hlbm/body_field.hpp"
+#include "fluid_app/hlbm/momentum_exchange.hpp"
+#include "fluid_app/hlbm/penalty_loads.hpp"
 #include "fluid_app/lattice/d3q19.hpp"
 
 namespace lbdem::hlbm::test {

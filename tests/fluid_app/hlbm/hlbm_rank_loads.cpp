@@ -15,6 +15,8 @@
 #include <vector>
 
 #include "fluid_app/hlbm/body_field.hpp"
+#include "fluid_app/hlbm/momentum_exchange.hpp"
+#include "fluid_app/hlbm/penalty_loads.hpp"
 #include "fluid_app/hlbm/solver_binding.hpp"
 #include "tests/fluid_app/fluid_test_setup.hpp"
 #include "tests/fluid_app/hlbm/hlbm_fixtures.hpp"
@@ -36,6 +38,7 @@ struct Run {
   FluidParams p;
   FluidSolver<double> solver;
   hlbm::BodyField<double> bodies;
+  hlbm::PenaltyLoads<double> loads;
   Run(const FluidParams& params, MPI_Comm comm, std::array<int, 3> dims, const Shape* shapes)
       : p(params),
         solver(p, comm, dims),
@@ -56,8 +59,9 @@ struct Run {
         out[l.id][at + 3 + c] = l.t[c];
       }
     };
-    for (const BodyLoad& l : bodies.momentum_exchange(hlbm::populations_of(solver), k)) put(l, 0);
-    for (const BodyLoad& l : bodies.penalty_loads(k)) put(l, 6);
+    for (const BodyLoad& l : hlbm::momentum_exchange(bodies, hlbm::populations_of(solver), k))
+      put(l, 0);
+    for (const BodyLoad& l : loads.loads(bodies, k)) put(l, 6);
     return out;
   }
 };

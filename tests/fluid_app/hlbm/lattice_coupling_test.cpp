@@ -21,7 +21,7 @@ using test::state;
 
 template <class T>
 Eigen::Vector3d ME_force(const BodyField<T>& bodies, const FluidSolver<T>& s) {
-  const BodyLoad l = bodies.momentum_exchange(populations_of(s), s.steps())[0];
+  const BodyLoad l = momentum_exchange(bodies, populations_of(s), s.steps())[0];
   return {l.f[0], l.f[1], l.f[2]};
 }
 
@@ -98,6 +98,7 @@ DragResult stokes_drag(double a, int n, double tau, int max_steps) {
   const Shape shape = test::sphere(a, 0.5);
   BodyField<double> bodies({&shape, 1}, subdomain_of(s, p), {Eigen::Vector3d::Zero(), p.units},
                            s.porous());
+  PenaltyLoads<double> loads;
   const BodyState st = state(0, Eigen::Vector3d::Constant(n / 2.0 + 0.1) * p.dx);
   bodies.update({&st, 1});
   const double g = 1e-6;  // lattice force density: U ~ 1e-4, Re << 1
@@ -107,8 +108,8 @@ DragResult stokes_drag(double a, int n, double tau, int max_steps) {
   int step = 0;
   while (step < max_steps) {
     s.step();
-    // penalty_loads must be read after every step (it differences the covered momentum).
-    fd = bodies.penalty_loads(step).at(0).f[0] / p.units.force();
+    // The penalty loads must be read after every step (they difference the covered momentum).
+    fd = loads.loads(bodies, step).at(0).f[0] / p.units.force();
     ++step;
     if (step % 100 != 0) continue;
     if (std::abs(fd - previous) < 1e-4 * std::abs(fd)) {

@@ -83,6 +83,7 @@ AuditResult audit(Motion motion, bool cube, double radius, double reynolds) {
                            : test::sphere(radius, 0.5);
   const Subdomain sub = subdomain_of(s, p);
   BodyField<double> bodies({&shape, 1}, sub, {Eigen::Vector3d::Zero(), p.units}, s.porous());
+  PenaltyLoads<double> loads;
   // Re = U 2R / nu with U the speed (towed) or the equator speed (spinning).
   const double speed = reynolds * nu / (2 * radius);
   const bool towed = motion == Motion::towed;
@@ -103,8 +104,8 @@ AuditResult audit(Motion motion, bool cube, double radius, double reynolds) {
     const BodyState st = test::state(0, x * p.dx, q, v * p.units.velocity(), w / p.units.dt);
     bodies.update({&st, 1});
     s.step();
-    const BodyLoad me = bodies.momentum_exchange(populations_of(s), k).at(0);
-    const BodyLoad l = bodies.penalty_loads(k).at(0);
+    const BodyLoad me = momentum_exchange(bodies, populations_of(s), k).at(0);
+    const BodyLoad l = loads.loads(bodies, k).at(0);
     for (int a = 0; a < 3; ++a) {
       impulse[a] += l.f[a] / p.units.force();
       angular[a] += l.t[a] / p.units.torque();
@@ -163,6 +164,7 @@ TEST(LoadAudit, BodiesAtRestInFluidAtRestFeelNoLoad) {
     FluidSolver<double> s(p, MPI_COMM_SELF);
     BodyField<double> bodies(shapes, subdomain_of(s, p), {Eigen::Vector3d::Zero(), p.units},
                              s.porous());
+    PenaltyLoads<double> loads;
     std::vector<BodyState> st = {test::state(
         0, Eigen::Vector3d(10.3, 12.1, 13.2) * p.dx,
         Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 1, 0).normalized())))};
@@ -173,7 +175,7 @@ TEST(LoadAudit, BodiesAtRestInFluidAtRestFeelNoLoad) {
     double worst = 0;
     for (int k = 0; k < 20; ++k) {
       s.step();
-      for (const BodyLoad& l : bodies.penalty_loads(k))
+      for (const BodyLoad& l : loads.loads(bodies, k))
         for (int a = 0; a < 3; ++a)
           worst = std::max(
               {worst, std::abs(l.f[a]) / p.units.force(), std::abs(l.t[a]) / p.units.torque()});

@@ -35,7 +35,7 @@ TEST(MomentumExchange, EquilibriumAtRestGivesNoLoad) {
   bodies.update(st);
   test::Populations f(sub.box);
   f.equilibrium(sub, 1.0, [](const Eigen::Vector3d&) { return Eigen::Vector3d::Zero(); });
-  const auto loads = bodies.momentum_exchange(f, 0);
+  const auto loads = momentum_exchange(bodies, f, 0);
   ASSERT_EQ(loads.size(), 2u);
   for (const BodyLoad& l : loads) {
     EXPECT_LT(force(l).norm(), 1e-12);
@@ -62,7 +62,7 @@ TEST(MomentumExchange, BodyMovingWithUniformFlowFeelsNoForce) {
     BodyField<double> bodies({&s, 1}, sub, test::unit_frame(), field);
     const BodyState st = state(0, Eigen::Vector3d(12, 12, 12), turns[k], u);
     bodies.update({&st, 1});
-    const BodyLoad l = bodies.momentum_exchange(f, 3).at(0);
+    const BodyLoad l = momentum_exchange(bodies, f, 3).at(0);
     EXPECT_EQ(l.step, 3);
     EXPECT_EQ(l.id, 0);
     EXPECT_LT(force(l).norm(), 1e-12);
@@ -106,7 +106,7 @@ TEST(MomentumExchange, PopulationsCrossingTheSurfaceCarryTheirMomentum) {
   bodies.update({&st, 1});
   test::Populations f(sub.box);
   f.equilibrium(sub, 1.0, [](const Eigen::Vector3d&) { return Eigen::Vector3d::Zero(); });
-  const BodyLoad base = bodies.momentum_exchange(f, 0).at(0);
+  const BodyLoad base = momentum_exchange(bodies, f, 0).at(0);
   const CellIndex c = boundary_cell(sub, field, 0);
   ASSERT_GE(c, 0);
   const auto l = sub.box.coords(c);
@@ -118,14 +118,14 @@ TEST(MomentumExchange, PopulationsCrossingTheSurfaceCarryTheirMomentum) {
   ASSERT_EQ(d3q19::c[plus_x][0], 1);
 
   f.at(plus_x, c) += delta;  // entering
-  const BodyLoad in = bodies.momentum_exchange(f, 0).at(0);
+  const BodyLoad in = momentum_exchange(bodies, f, 0).at(0);
   const Eigen::Vector3d expect_in = (Eigen::Vector3d::UnitX() - up) * delta;
   EXPECT_LT((force(in) - force(base) - expect_in).norm(), 1e-14);
   EXPECT_LT((torque(in) - torque(base) - r.cross(expect_in)).norm(), 1e-13);
   f.at(plus_x, c) -= delta;
 
   f.at(minus_x, c - 1) += delta;  // leaving
-  const BodyLoad out = bodies.momentum_exchange(f, 0).at(0);
+  const BodyLoad out = momentum_exchange(bodies, f, 0).at(0);
   const Eigen::Vector3d expect_out = (Eigen::Vector3d::UnitX() + up) * delta;
   EXPECT_LT((force(out) - force(base) - expect_out).norm(), 1e-14);
   EXPECT_LT((torque(out) - torque(base) - r.cross(expect_out)).norm(), 1e-13);
@@ -159,7 +159,7 @@ TEST(MomentumExchange, TorqueUsesMinimumImageLeverArms) {
     bodies.update({&st, 1});
     test::Populations f(sub.box);
     relative_flow(f, sub, x);
-    loads[k++] = bodies.momentum_exchange(f, 0).at(0);
+    loads[k++] = momentum_exchange(bodies, f, 0).at(0);
   }
   std::printf("middle: F = (%.3e %.3e %.3e) T = (%.3e %.3e %.3e)\n", loads[0].f[0], loads[0].f[1],
               loads[0].f[2], loads[0].t[0], loads[0].t[1], loads[0].t[2]);
@@ -183,7 +183,7 @@ TEST(MomentumExchange, PartialSumsOfUnevenBlocksAddUp) {
     bodies.update({&st, 1});
     test::Populations f(sub.box);
     relative_flow(f, sub, x);
-    return bodies.momentum_exchange(f, 0).at(0);
+    return momentum_exchange(bodies, f, 0).at(0);
   };
   const BodyLoad all = load_of(test::whole(n));
   Eigen::Vector3d fsum = Eigen::Vector3d::Zero(), tsum = Eigen::Vector3d::Zero();
@@ -217,7 +217,7 @@ TEST(MomentumExchange, LoadsAreConvertedToSi) {
   bs.update({&sts, 1});
   test::Populations f(sub.box);
   relative_flow(f, sub, x);
-  const BodyLoad a = bl.momentum_exchange(f, 0).at(0), b = bs.momentum_exchange(f, 0).at(0);
+  const BodyLoad a = momentum_exchange(bl, f, 0).at(0), b = momentum_exchange(bs, f, 0).at(0);
   // Units from the definitions, not from UnitConverter: nu = (tau - 1/2) / 3 dx^2 / dt gives
   // dt = 0.1 s; a force is rho dx^4 / dt^2 (1e-7 N), a torque rho dx^5 / dt^2 (1e-10 N m).
   const double dt = (0.8 - 0.5) / 3.0 * dx * dx / 1e-6;

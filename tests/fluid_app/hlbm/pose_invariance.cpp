@@ -141,6 +141,7 @@ Result steady_load(const Case& c, FluidSolver<double>& s, const Shape& shape, co
   const FluidParams p = lattice(c);
   BodyField<double> bodies({&shape, 1}, subdomain_of(s, p), {Eigen::Vector3d::Zero(), p.units},
                            s.porous(), PorosityLookup::nearest);
+  PenaltyLoads<double> loads;
   const double nu = (c.tau - 0.5) / 3.0;  // lattice
   const double a = radius(c);
   const double cells = double(n) * n * n;
@@ -161,7 +162,7 @@ Result steady_load(const Case& c, FluidSolver<double>& s, const Shape& shape, co
   Result r;
   for (int k = 0; k < 100000; ++k) {
     s.step();
-    const BodyLoad l = bodies.penalty_loads(k).at(0);
+    const BodyLoad l = loads.loads(bodies, k).at(0);
     bodies.update({&st, 1});
     if ((k + 1) % check != 0) continue;
     Eigen::Vector3d f, t;
