@@ -337,21 +337,35 @@ void BodyField<T>::follow_band(std::int32_t slot, std::vector<BandCell>& band, U
     w.old[row * words + static_cast<std::size_t>(i) / 64] |= std::uint64_t{1} << (i % 64);
     mark(w.frontier, w.in_frontier, w.frontier_rows, static_cast<std::size_t>(i), row);
   }
-  const std::array<std::size_t, 3> n = {nx, ny, nz};
-  for (int a = 0; a < 3; ++a)
-    for (int face : {0, box.n[a] + 1}) {
-      const int wf = w.inv[a][static_cast<std::size_t>(face)];
-      if (wf < 0) continue;
-      const int b = (a + 1) % 3, c = (a + 2) % 3;
-      for (std::size_t ib = 0; ib < n[static_cast<std::size_t>(b)]; ++ib)
-        for (std::size_t ic = 0; ic < n[static_cast<std::size_t>(c)]; ++ic) {
-          std::array<std::size_t, 3> wi;
-          wi[static_cast<std::size_t>(a)] = static_cast<std::size_t>(wf);
-          wi[static_cast<std::size_t>(b)] = ib;
-          wi[static_cast<std::size_t>(c)] = ic;
-          mark(w.candidates, w.in_candidates, w.candidate_rows, wi[0], wi[1] + ny * wi[2]);
-        }
+  // The outermost layer as whole rows: one bit per row for the x faces, every cell of the rows
+  // of a y or z face.
+  auto face_rows = [&](std::size_t row, std::size_t first_bit, bool whole) {
+    for (std::size_t k = 0; k < words; ++k) {
+      std::uint64_t bits = 0;
+      if (whole)
+        bits =
+            k + 1 < words || nx % 64 == 0 ? ~std::uint64_t{0} : (std::uint64_t{1} << (nx % 64)) - 1;
+      else if (k == first_bit / 64)
+        bits = std::uint64_t{1} << (first_bit % 64);
+      w.candidates[row * words + k] |= bits;
     }
+    if (!w.in_candidates[row]) {
+      w.in_candidates[row] = 1;
+      w.candidate_rows.push_back(row);
+    }
+  };
+  for (int face : {0, box.n[0] + 1})
+    if (const int wf = w.inv[0][static_cast<std::size_t>(face)]; wf >= 0)
+      for (std::size_t row = 0; row < w.rows; ++row)
+        face_rows(row, static_cast<std::size_t>(wf), false);
+  for (int face : {0, box.n[1] + 1})
+    if (const int wf = w.inv[1][static_cast<std::size_t>(face)]; wf >= 0)
+      for (std::size_t jz = 0; jz < nz; ++jz)
+        face_rows(static_cast<std::size_t>(wf) + ny * jz, 0, true);
+  for (int face : {0, box.n[2] + 1})
+    if (const int wf = w.inv[2][static_cast<std::size_t>(face)]; wf >= 0)
+      for (std::size_t jy = 0; jy < ny; ++jy)
+        face_rows(jy + ny * static_cast<std::size_t>(wf), 0, true);
 
   std::vector<std::uint64_t>& grown = w.grown;
   for (;;) {
