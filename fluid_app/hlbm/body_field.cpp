@@ -88,6 +88,7 @@ void BodyField<T>::set_pose(Tracked& t, const BodyState& s) const {
     t.stencil.y[i] = o.y();
     t.stencil.z[i] = o.z();
   }
+  t.stencil.set_extent();
 }
 
 // Paper, appendix "Representation of a particle in the fluid": the node at minimum-image

@@ -95,6 +95,54 @@ ReferencePorosity::ReferencePorosity(const Voxels& voxels) : h_(voxels.h) {
   for (std::size_t v = 0; v < fluid.size(); ++v)
     block_[v] = lo[v] == 1.0f ? Block::fluid : hi[v] == 0.0f ? Block::solid : Block::mixed;
 
+  // 4^3 boxes: running minimum and maximum over voxels l .. l + 3 along each axis in turn, on
+  // the lattice of box origins l = -2 .. m - 1 (voxels beyond the padded lattice: fluid).
+  const std::array<int, 3> q = {m_[0] + 2, m_[1] + 2, m_[2] + 2};
+  box4_stride_ = {static_cast<std::size_t>(q[0]), static_cast<std::size_t>(q[0]) * q[1]};
+  const std::size_t boxes = box4_stride_[1] * static_cast<std::size_t>(q[2]);
+  auto fluid_or_one = [&](int i, int j, int k) {
+    if (i < -kPointPad || j < -kPointPad || k < -kPointPad || i >= m_[0] + kPointPad ||
+        j >= m_[1] + kPointPad || k >= m_[2] + kPointPad)
+      return 1.0f;
+    return fluid_[static_cast<std::size_t>(fluid_origin_ + i + stride_[0] * j + stride_[1] * k)];
+  };
+  std::vector<float> lo4(boxes), hi4(boxes);
+  idx = 0;
+  for (int k = 0; k < q[2]; ++k)
+    for (int j = 0; j < q[1]; ++j)
+      for (int i = 0; i < q[0]; ++i, ++idx) {
+        float l4 = 1.0f, h4 = 0.0f;
+        for (int s = 0; s < 4; ++s) {
+          const float v = fluid_or_one(i - 2 + s, j - 2, k - 2);
+          l4 = std::min(l4, v);
+          h4 = std::max(h4, v);
+        }
+        lo4[idx] = l4;
+        hi4[idx] = h4;
+      }
+  // Along y and z the values beyond the box lattice are those of voxels beyond the padded
+  // lattice plus one: fluid.
+  for (int a = 1; a < 3; ++a) {
+    const std::vector<float> l0 = lo4, h0 = hi4;
+    idx = 0;
+    for (int k = 0; k < q[2]; ++k)
+      for (int j = 0; j < q[1]; ++j)
+        for (int i = 0; i < q[0]; ++i, ++idx)
+          for (int s = 1; s < 4; ++s) {
+            const int l = (a == 1 ? j : k) + s;
+            if (l >= q[a]) {
+              hi4[idx] = std::max(hi4[idx], 1.0f);
+              continue;
+            }
+            const std::size_t o = idx + static_cast<std::size_t>(s) * box4_stride_[a - 1];
+            lo4[idx] = std::min(lo4[idx], l0[o]);
+            hi4[idx] = std::max(hi4[idx], h0[o]);
+          }
+  }
+  box4_.resize(boxes);
+  for (std::size_t v = 0; v < boxes; ++v)
+    box4_[v] = lo4[v] == 1.0f ? Block::fluid : hi4[v] == 0.0f ? Block::solid : Block::mixed;
+
   for (int k = 0; k < n[2]; ++k)
     for (int j = 0; j < n[1]; ++j)
       for (int i = 0; i < n[0]; ++i) {
@@ -175,8 +223,33 @@ void ReferencePorosity::nearest(NearestBatch& batch, const NearestStencil& stenc
     batch.mixed[count] = static_cast<std::uint32_t>(k);
     count += b == Block::mixed;
   }
-  batch.mixed_count = count;
+  // The mixed ones again with the 4^3 box their points can reach (a node's 5^3 block is mixed
+  // up to two voxels from a surface, its points reach less far on one side of each axis).
+  std::size_t still = 0;
+  for (std::size_t m = 0; m < count; ++m) {
+    const std::uint32_t node = batch.mixed[m];
+    const double x = batch.x[node] + kNearestHalf, y = batch.y[node] + kNearestHalf,
+                 z = batch.z[node] + kNearestHalf;
+    // x, y, z lie on the padded lattice (the block was mixed): the box origins are >= -2.
+    const auto i = static_cast<std::size_t>(std::floor(x - stencil.extent[0]) + 2);
+    const auto j = static_cast<std::size_t>(std::floor(y - stencil.extent[1]) + 2);
+    const auto l = static_cast<std::size_t>(std::floor(z - stencil.extent[2]) + 2);
+    const Block b = box4_[i + box4_stride_[0] * j + box4_stride_[1] * l];
+    batch.d[node] = b == Block::fluid ? 1.0f : 0.0f;
+    batch.mixed[still] = node;
+    still += b == Block::mixed;
+  }
+  batch.mixed_count = still;
   read_points(batch, stencil);
+}
+
+void NearestStencil::set_extent() {
+  for (int a = 0; a < 3; ++a) {
+    const std::array<double, kPadded>& o = a == 0 ? x : a == 1 ? y : z;
+    double e = 0;
+    for (int i = 0; i < kPoints; ++i) e = std::max(e, std::abs(o[static_cast<std::size_t>(i)]));
+    extent[static_cast<std::size_t>(a)] = e + 1e-9;
+  }
 }
 
 // Four nodes per vector, the lanes doing the scalar read_points' operations in its order: the

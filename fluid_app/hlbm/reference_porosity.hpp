@@ -57,6 +57,10 @@ inline constexpr double kNearestHalf = 0.5 + kTieTolerance;
 struct NearestStencil {
   static constexpr int kPoints = 19, kPadded = 20;
   alignas(32) std::array<double, kPadded> x{}, y{}, z{};
+  // Per axis, the largest |offset| plus 1e-9 voxels (far above the round-off of a mapped point,
+  // below 1.5 since |R^T c_i| <= sqrt 2): what the batched lookup's 4-voxel boxes rest on.
+  std::array<double, 3> extent{1.5, 1.5, 1.5};
+  void set_extent();
 };
 
 // Nodes for a batched lookup: `count` nodes with their reference-lattice coordinates, one array
@@ -127,6 +131,11 @@ class ReferencePorosity {
   // Per voxel: are the voxels within Chebyshev distance 2 (outside the lattice: fluid) all
   // fluid or all solid? Every stencil point of a node lies within 2 of the node's nearest voxel.
   std::vector<Block> block_;
+  // Per voxel l (-2 <= l_a < m_a, stored at l + 2): the class of the 4^3 voxels l .. l + 3 (beyond
+  // the padded lattice: fluid). A node at x = ref + kNearestHalf reads, per axis, voxels between
+  // floor(x - e) and floor(x + e) (e: the stencil's extent), at most 4 of them since 2 e < 3.
+  std::vector<Block> box4_;
+  std::array<std::size_t, 2> box4_stride_{0, 0};
   double support_radius_ = 0;
   double surface_radius_ = 0;
 
