@@ -329,7 +329,6 @@ void BodyField<T>::follow_band(std::int32_t slot, std::vector<BandCell>& band, U
   // Seeds: the old band (inside the window: it moved by less than a cell) is the first
   // frontier; the box's outermost layer, where the support reaches it, is evaluated as is.
   for (const BandCell& b : t.band) {
-    touched_.push_back(b.cell);
     const int i = w.inv[0][b.l[0]], j = w.inv[1][b.l[1]], k = w.inv[2][b.l[2]];
     if (i < 0 || j < 0 || k < 0)
       throw std::logic_error("BodyField: a band cell of body " + std::to_string(t.id) +
@@ -430,15 +429,22 @@ void BodyField<T>::follow_band(std::int32_t slot, std::vector<BandCell>& band, U
     }
   }
 
+  // The new band, and the old band cells that left it: combine() resets both.
   for (std::size_t row = 0; row < w.rows; ++row) {
     const int y = w.l[1][row % ny], z = w.l[2][row / ny];
-    for (std::size_t k = 0; k < words; ++k)
-      for (std::uint64_t bits = w.band[row * words + k]; bits; bits &= bits - 1) {
+    for (std::size_t k = 0; k < words; ++k) {
+      const std::size_t word = row * words + k;
+      for (std::uint64_t bits = w.band[word]; bits; bits &= bits - 1) {
         const std::size_t i = 64 * k + static_cast<std::size_t>(std::countr_zero(bits));
         const auto c = static_cast<std::uint32_t>(box.index(w.l[0][i], y, z));
         band.push_back({c, w.d[row * nx + i], local(w.l[0][i], y, z)});
         touched_.push_back(c);
       }
+      for (std::uint64_t bits = w.old[word] & ~w.band[word]; bits; bits &= bits - 1) {
+        const std::size_t i = 64 * k + static_cast<std::size_t>(std::countr_zero(bits));
+        touched_.push_back(static_cast<std::uint32_t>(box.index(w.l[0][i], y, z)));
+      }
+    }
   }
 }
 
