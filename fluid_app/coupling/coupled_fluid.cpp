@@ -180,9 +180,11 @@ int run_typed(AppContext& ctx) {
     ctx.log->info("{}", settling.description);
   }
 
-  // Triply periodic settling: the momentum audit at the coupling output steps.
+  // Triply periodic box: the momentum audit at the coupling output steps (with or without
+  // settling: without external forces it audits the exchange alone).
   std::unique_ptr<MomentumAudit> audit;
-  if (settling.active && session.schedule().output_interval > 0) {
+  if (sub.periodic[0] && sub.periodic[1] && sub.periodic[2] &&
+      session.schedule().output_interval > 0) {
     std::filesystem::path dir(scene.dem->output.directory);
     if (dir.is_relative()) dir = std::filesystem::path(scene.file).parent_path() / dir;
     if (ctx.rank == 0) std::filesystem::create_directories(dir);
