@@ -69,7 +69,7 @@ int run_dem_only(AppContext& ctx) {
   const double dt = engine.dt();
   const auto total = static_cast<long>(step_count(scene.time.end, dt));
   auto every = [dt](double interval) {
-    return interval > 0 ? std::max(1L, std::lround(interval / dt)) : 0L;
+    return interval > 0 ? steps_between(interval, dt) : 0L;
   };
   const long snap_every = every(out.interval);
   const long energy_every = out.energy_interval > 0 ? every(out.energy_interval) : snap_every;

@@ -13,7 +13,8 @@ namespace lbdem {
 void log_fluid_setup(const AppContext& ctx, const FluidParams& p) {
   const UnitConverter& u = p.units;
   ctx.log->info("fluid lattice {} x {} x {} = {} cells, precision {}", p.cells[0], p.cells[1],
-                p.cells[2], double(p.cells[0]) * p.cells[1] * p.cells[2], p.precision);
+                p.cells[2], double(p.cells[0]) * p.cells[1] * p.cells[2],
+                word_of(kPrecisionWords, p.precision));
   std::string d = u.describe();
   for (std::size_t b = 0, e; b < d.size(); b = e + 1) {
     e = d.find('\n', b);
@@ -105,7 +106,8 @@ int run_fluid_scene(AppContext& ctx) {
     ctx.log->error("the scene has no 'fluid' section: nothing for fluid_app to do");
     return 1;
   }
-  return ctx.scene.fluid->precision == "float" ? run_typed<float>(ctx) : run_typed<double>(ctx);
+  return ctx.scene.fluid->precision == Precision::float32 ? run_typed<float>(ctx)
+                                                          : run_typed<double>(ctx);
 }
 
 }  // namespace lbdem

@@ -113,8 +113,7 @@ int main(int argc, char** argv) {
     }
     hlbm::Subdomain sub{with.box(), {fp.periodic(0), fp.periodic(1), fp.periodic(2)}};
     hlbm::LatticeFrame frame{Eigen::Vector3d::Zero(), fp.units};
-    hlbm::BodyField<double> bodies(shapes, sub, frame, with.porous(),
-                                   hlbm::porosity_lookup_from(fp.porosity_lookup));
+    hlbm::BodyField<double> bodies(shapes, sub, frame, with.porous(), fp.porosity_lookup);
     std::mt19937_64 rng(7);
     std::normal_distribution<double> g;
     std::vector<BodyState> states;

@@ -28,6 +28,7 @@
 namespace {
 
 using lbdem::BodyState;
+using lbdem::PorosityLookup;
 using namespace lbdem::hlbm;
 
 // CPU time of this thread: on a shared machine the wall time mostly measures the others.

@@ -70,7 +70,8 @@ std::string describe_stall_limit(const Scene& scene) {
     // One copy of the 19 populations per cell: what a fluid checkpoint holds.
     const auto& c = scene.fluid->cells;
     const double gib = double(c[0]) * c[1] * c[2] * 19 *
-                       (scene.fluid->precision == "float" ? 4 : 8) / (1024.0 * 1024.0 * 1024.0);
+                       (scene.fluid->precision == Precision::float32 ? 4 : 8) /
+                       (1024.0 * 1024.0 * 1024.0);
     m << "; a fluid checkpoint holds " << gib << " GiB: the first must be written within "
       << StallWatch::kAutomaticFloor << " s (at least " << gib / StallWatch::kAutomaticFloor * 1024
       << " MiB/s) unless the exchanges are slower, else set coupling.stall_timeout";

@@ -204,8 +204,7 @@ World connect(const SideInfo& ctx, const ConnectOptions& options) {
     MPI_Comm_free(&inter);
     throw JobError(problem);
   }
-  return World(ctx.side_comm, inter, peer_of(peer), wait_mode_from(ctx.coupling.wait),
-               ctx.coupling.stall_timeout);
+  return World(ctx.side_comm, inter, peer_of(peer), ctx.coupling.wait, ctx.coupling.stall_timeout);
 }
 
 }  // namespace lbdem

@@ -131,11 +131,11 @@ int run_typed(AppContext& ctx) {
 
   const std::vector<Shape> shapes = build_scene_shapes(scene);
   CouplingSession session(ctx, scene, coupled_schedule(scene, shapes), replay ? nullptr : &world);
-  if (scene.fluid->hydrodynamic_radius == "calibrated")
+  if (scene.fluid->hydrodynamic_radius == HydrodynamicRadius::calibrated)
     ctx.log->info(
         "hydrodynamic radius calibrated: the band's excess at tau {} ({} lookup) is {:+.3f} "
         "cells, so the fluid sees every surface moved inward by that much (docs/method.md)",
-        scene.fluid->tau, scene.fluid->porosity_lookup,
+        scene.fluid->tau, word_of(kPorosityLookupWords, scene.fluid->porosity_lookup),
         *band_radius_excess_cells(scene.fluid->tau, scene.fluid->porosity_lookup));
   FluidRun<T> run(ctx, shapes);
   FluidSolver<T>& solver = run.solver();
@@ -162,8 +162,7 @@ int run_typed(AppContext& ctx) {
 
   hlbm::Subdomain sub{solver.box(), geometry.periodic};
   hlbm::LatticeFrame frame{Eigen::Vector3d::Zero(), scene.fluid->units};
-  hlbm::BodyField<T> bodies(shapes, sub, frame, solver.porous(),
-                            hlbm::porosity_lookup_from(scene.fluid->porosity_lookup));
+  hlbm::BodyField<T> bodies(shapes, sub, frame, solver.porous(), scene.fluid->porosity_lookup);
   const SettlingForce settling = settling_force(scene, shapes);
   if (settling.active) {
     // The controller (if any) adds its correction to this feed-forward (or, with
@@ -255,7 +254,8 @@ int run_typed(AppContext& ctx) {
 }  // namespace
 
 int run_coupled_fluid(AppContext& ctx) {
-  return ctx.scene.fluid->precision == "float" ? run_typed<float>(ctx) : run_typed<double>(ctx);
+  return ctx.scene.fluid->precision == Precision::float32 ? run_typed<float>(ctx)
+                                                          : run_typed<double>(ctx);
 }
 
 }  // namespace lbdem

@@ -29,10 +29,9 @@
 #include <vector>
 
 #include "coupler_lib/geometry/shape.hpp"
+#include "coupler_lib/scene/choices.hpp"
 
 namespace lbdem::hlbm {
-
-enum class PorosityLookup { trilinear, nearest };
 
 // The nearest lookup's rounding, floor(x + kNearestHalf) in voxel coordinates: round half up,
 // with ties judged within kTieTolerance voxels. A point on a voxel face is a tie, and a body
@@ -56,9 +55,6 @@ struct NearestStencil {
   static constexpr int kPoints = 19, kPadded = 20;
   alignas(32) std::array<double, kPadded> x{}, y{}, z{};
 };
-
-// "trilinear" or "nearest" (the scene's fluid.porosity_lookup, already validated).
-PorosityLookup porosity_lookup_from(const std::string& name);
 
 class ReferencePorosity {
  public:

@@ -98,13 +98,13 @@ std::vector<Pose> poses() {
 Shape make_shape(const Case& c, double dx) {
   ShapeParams p;
   p.name = c.kind;
-  p.kind = c.kind;
+  p.kind = value_of(kShapeKindWords, c.kind);
   p.size = c.size * dx;
   const double e = c.kind == "sphere" ? p.size / 2 : p.size;
   p.extents = {e, e, e};
-  p.clump.source = "fill";
+  p.clump.source = ClumpSource::fill;
   p.clump.spheres = 1;  // the clump plays no part here
-  p.hydrodynamic_offset = *band_radius_excess_cells(c.tau, "nearest") * dx;
+  p.hydrodynamic_offset = *band_radius_excess_cells(c.tau, PorosityLookup::nearest) * dx;
   return build_shape(p, 0.5 * dx);
 }
 
