@@ -4,8 +4,10 @@
 # The table below lists the layers bottom to top. Each has its members (path prefixes: a folder
 # with its trailing slash, or a file) and the layers below it that its files may include
 # (besides their own layer). A file belongs to the layer of its longest matching prefix; every
-# file of coupler_lib, fluid_app and dem_app must belong to one. A layer may name only layers
-# declared before it, so the table itself has no cycle.
+# file of coupler_lib, fluid_app and dem_app must belong to one, and every .cpp must be named
+# in its program's (or coupler_lib's) CMakeLists.txt: the source lists are explicit, so a file
+# left out would silently not be built. A layer may name only layers declared before it, so
+# the table itself has no cycle.
 cmake_minimum_required(VERSION 3.20)
 if(NOT ROOT)
   message(FATAL_ERROR "check_layers.cmake: pass -DROOT=<source tree>")
@@ -113,6 +115,18 @@ foreach(src IN LISTS sources)
                        "program's CMakeLists.txt and docs/developer.md")
     math(EXPR problems "${problems} + 1")
     continue()
+  endif()
+  if(src MATCHES "^([a-z_]+)/(.+\\.cpp)$")
+    set(lists ${CMAKE_MATCH_1}/CMakeLists.txt)
+    string(REPLACE "." "\\." listed "${CMAKE_MATCH_2}")
+    set(text "")
+    if(EXISTS ${ROOT}/${lists})
+      file(READ ${ROOT}/${lists} text)
+    endif()
+    if(NOT text MATCHES "[ \t\n(]${listed}[ \t\n)]")
+      message(SEND_ERROR "${src}: not in the source list of ${lists}")
+      math(EXPR problems "${problems} + 1")
+    endif()
   endif()
   file(STRINGS ${ROOT}/${src} includes REGEX "^[ \t]*#[ \t]*include[ \t]*\"")
   foreach(line IN LISTS includes)
