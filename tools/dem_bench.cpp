@@ -26,7 +26,7 @@
 #include <string>
 
 #include "coupler_lib/geometry/build_shape.hpp"
-#include "dem_app/lammps_engine.hpp"
+#include "dem_app/engine/lammps_engine.hpp"
 
 namespace {
 

@@ -32,8 +32,8 @@
 
 #include "coupler_lib/scene/scene.hpp"
 #include "coupler_lib/scene/shape_catalogue.hpp"
-#include "fluid_app/fluid_solver.hpp"
 #include "fluid_app/hlbm/body_field.hpp"
+#include "fluid_app/solver/fluid_solver.hpp"
 
 namespace {
 

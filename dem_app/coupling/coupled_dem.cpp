@@ -12,13 +12,13 @@
 #include "coupler_lib/geometry/display_surface.hpp"
 #include "coupler_lib/scene/scene_fingerprint.hpp"
 #include "coupler_lib/scene/shape_catalogue.hpp"
-#include "dem_app/body_output.hpp"
 #include "dem_app/coupling/body_trace.hpp"
 #include "dem_app/coupling/body_watch.hpp"
 #include "dem_app/coupling/dem_checkpoint.hpp"
-#include "dem_app/dem_run.hpp"
-#include "dem_app/dem_setup.hpp"
-#include "dem_app/lammps_engine.hpp"
+#include "dem_app/engine/lammps_engine.hpp"
+#include "dem_app/output/body_output.hpp"
+#include "dem_app/run/dem_run.hpp"
+#include "dem_app/setup/dem_setup.hpp"
 
 namespace lbdem {
 

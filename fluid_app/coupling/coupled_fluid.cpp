@@ -20,11 +20,12 @@
 #include "fluid_app/coupling/fluid_checkpoint.hpp"
 #include "fluid_app/coupling/momentum_audit.hpp"
 #include "fluid_app/coupling/settling_force.hpp"
+#include "fluid_app/coupling/solver_binding.hpp"
 #include "fluid_app/coupling/state_feed.hpp"
-#include "fluid_app/fluid_run.hpp"
 #include "fluid_app/hlbm/body_field.hpp"
-#include "fluid_app/output/run_watch.hpp"
 #include "fluid_app/parallel/balance.hpp"
+#include "fluid_app/run/fluid_run.hpp"
+#include "fluid_app/run/run_watch.hpp"
 
 namespace lbdem {
 
@@ -160,17 +161,17 @@ int run_typed(AppContext& ctx) {
       replay ? std::make_unique<FluidCoupler>(ctx, ctx.cli.replay, geometry)
              : std::make_unique<FluidCoupler>(world, geometry);
 
-  hlbm::Subdomain sub{solver.box(), geometry.periodic};
   hlbm::LatticeFrame frame{Eigen::Vector3d::Zero(), scene.fluid->units};
-  hlbm::BodyField<T> bodies(shapes, sub, frame, solver.porous(), scene.fluid->porosity_lookup);
+  hlbm::BodyField<T> bodies(shapes, hlbm::subdomain_of(solver, *scene.fluid), frame,
+                            solver.porous(), scene.fluid->porosity_lookup);
   const SettlingForce settling = settling_force(scene, shapes);
   if (settling.active) {
     // The controller (if any) adds its correction to this feed-forward (or, with
     // feed_forward: false, finds the force alone, as in the paper); without it the
     // compensating force simply adds to the scene's uniform body force.
-    if (scene.fluid->control.enabled) {
+    if (run.control()) {
       if (scene.fluid->control.feed_forward)
-        solver.set_feed_forward_force(settling.fluid_force_lattice);
+        run.control()->set_feed_forward(settling.fluid_force_lattice);
     } else {
       auto force = solver.uniform_force();
       for (int a = 0; a < 3; ++a) force[a] += settling.fluid_force_lattice[a];
@@ -194,6 +195,7 @@ int run_typed(AppContext& ctx) {
   if (restart) {
     // After the run's own set-up of forces (feed-forward), which the memory overrides.
     solver.restore(restart->memory);
+    if (run.control()) run.control()->restore(restart->control_integral);
     solver.set_interior_populations(restored);
     restored = {};
   }
@@ -217,7 +219,9 @@ int run_typed(AppContext& ctx) {
     SeriesLengths lengths;
     lengths.series = watch.series_bytes();
     if (audit) lengths.momentum = audit->bytes();
-    write_fluid_checkpoint(prefix, header, solver, covered, lengths);
+    write_fluid_checkpoint(prefix, header, solver,
+                           run.control() ? run.control()->integral() : std::array<double, 3>{},
+                           covered, lengths);
   });
 
   while (session.ongoing()) {
@@ -225,8 +229,7 @@ int run_typed(AppContext& ctx) {
     session.timed("lattice", [&] { run.step(); });
     const auto loads = session.timed("porosity + momentum exchange", [&] {
       return penalty ? bodies.penalty_loads(step)
-                     : bodies.momentum_exchange(
-                           [&](int i, CellIndex c) { return solver.population(i, c); }, step);
+                     : bodies.momentum_exchange(hlbm::populations_of(solver), step);
     });
     feed.send(step, loads);
     // The audit, the agreement and a checkpoint need the states of this very step (a brief

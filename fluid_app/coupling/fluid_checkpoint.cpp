@@ -16,7 +16,8 @@ namespace lbdem {
 
 namespace {
 
-constexpr int kMemoryValues = 13;  // force, integral, impulse, mean velocity (3 each), mass
+// force, controller integral, impulse, mean velocity (3 each), mass
+constexpr int kMemoryValues = 13;
 constexpr int kCoveredValues = 8;  // rank, id, Q (3), L (3)
 
 template <class T>
@@ -106,8 +107,9 @@ std::vector<double> read_table(hid_t file, const char* name, int cols) {
 
 template <class T>
 void write_fluid_checkpoint(const std::string& prefix, const CheckpointHeader& header,
-                            const FluidSolver<T>& solver, std::span<const CoveredRecord> mine,
-                            const SeriesLengths& lengths) {
+                            const FluidSolver<T>& solver,
+                            const std::array<double, 3>& control_integral,
+                            std::span<const CoveredRecord> mine, const SeriesLengths& lengths) {
   const MPI_Comm comm = solver.comm();
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
@@ -142,7 +144,7 @@ void write_fluid_checkpoint(const std::string& prefix, const CheckpointHeader& h
 
     const SolverMemory m = solver.memory();
     std::vector<double> memory;
-    for (const auto* a : {&m.force, &m.integral, &m.impulse, &m.mean.velocity})
+    for (const auto* a : {&m.force, &control_integral, &m.impulse, &m.mean.velocity})
       memory.insert(memory.end(), a->begin(), a->end());
     memory.push_back(m.mean.mass);
     write_table(file, "solver_memory", memory, kMemoryValues, rank);
@@ -203,7 +205,7 @@ FluidRestart read_fluid_checkpoint(const std::string& prefix, const CheckpointHe
     mem_state.steps = r.header.step;
     for (int k = 0; k < 3; ++k) {
       mem_state.force[k] = m[k];
-      mem_state.integral[k] = m[3 + k];
+      r.control_integral[k] = m[3 + k];
       mem_state.impulse[k] = m[6 + k];
       mem_state.mean.velocity[k] = m[9 + k];
     }
@@ -236,9 +238,10 @@ FluidRestart read_fluid_checkpoint(const std::string& prefix, const CheckpointHe
 
 template void write_fluid_checkpoint<double>(const std::string&, const CheckpointHeader&,
                                              const FluidSolver<double>&,
+                                             const std::array<double, 3>&,
                                              std::span<const CoveredRecord>, const SeriesLengths&);
 template void write_fluid_checkpoint<float>(const std::string&, const CheckpointHeader&,
-                                            const FluidSolver<float>&,
+                                            const FluidSolver<float>&, const std::array<double, 3>&,
                                             std::span<const CoveredRecord>, const SeriesLengths&);
 template FluidRestart read_fluid_checkpoint<double>(const std::string&, const CheckpointHeader&,
                                                     const FluidSolver<double>&,

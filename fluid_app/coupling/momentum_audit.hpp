@@ -27,7 +27,7 @@
 #include "coupler_lib/coupling/packets.hpp"
 #include "coupler_lib/geometry/shape.hpp"
 #include "coupler_lib/scene/scene.hpp"
-#include "fluid_app/fluid_solver.hpp"
+#include "fluid_app/solver/fluid_solver.hpp"
 
 namespace lbdem {
 

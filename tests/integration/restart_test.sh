@@ -12,8 +12,10 @@
 #      half, another scene (viscosity changed), another DEM rank count.
 # With a fifth argument `quick`, parts 1 to 4 only; with `overlap`, parts 1 to 4 with
 # coupling.overlap (the fluid one step behind; it waits for the states at agreement steps,
-# so checkpoints hold one step of both programs and the restart is still byte for byte).
-# Usage: restart_test.sh BUILD_DIR SOURCE_DIR NF ND [quick|overlap]
+# so checkpoints hold one step of both programs and the restart is still byte for byte); with
+# `control`, parts 1 to 4 under fluid.mean_velocity_control without feed-forward (the
+# controller alone finds the force, so its integral must cross the restart).
+# Usage: restart_test.sh BUILD_DIR SOURCE_DIR NF ND [quick|overlap|control]
 set -euo pipefail
 build=$1 src=$2 nf=$3 nd=$4 mode=${5:-}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
@@ -35,6 +37,7 @@ run() {  # run LOG NF ND [fluid/dem options...] : scene is scene.yaml
 fail() { echo "FAIL: $*"; exit 1; }
 scene() {  # scene END [extra coupling lines]
   sed "s/end: 2.0e-2/end: $1/" "$src/tests/integration/restart_scene.yaml" > scene.yaml
+  [ "$mode" = control ] && sed -i 's/^  tau: 0.6$/  tau: 0.6\n  mean_velocity_control: {target: [0, 0, 0], gain: 0.3, integral_gain: 0.05, feed_forward: false}/' scene.yaml
   shift
   [ "$mode" = overlap ] && set -- "$@" "overlap: true"
   for line in "$@"; do printf '  %s\n' "$line" >> scene.yaml; done
@@ -109,7 +112,7 @@ cmp restart_sphere_bodies.csv straight_bodies.csv || fail "trace after SIGTERM +
 cmp restart_sphere_momentum.csv straight_momentum.csv || fail "audit after SIGTERM + restart differs"
 echo "SIGTERM: checkpoint written, restart identical byte for byte"
 
-if [ "$mode" = quick ] || [ "$mode" = overlap ]; then
+if [ "$mode" = quick ] || [ "$mode" = overlap ] || [ "$mode" = control ]; then
   echo "PASS: restart ($nf:$nd) in $(echo "$(date +%s.%N) - $started" | bc) s"
   exit 0
 fi
