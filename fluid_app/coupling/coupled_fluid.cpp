@@ -162,8 +162,8 @@ int run_typed(AppContext& ctx) {
              : std::make_unique<FluidCoupler>(world, geometry);
 
   hlbm::LatticeFrame frame{Eigen::Vector3d::Zero(), scene.fluid->units};
-  hlbm::BodyField<T> bodies(shapes, hlbm::subdomain_of(solver, *scene.fluid), frame,
-                            solver.porous(), scene.fluid->porosity_lookup);
+  const hlbm::Subdomain sub = hlbm::subdomain_of(solver, *scene.fluid);
+  hlbm::BodyField<T> bodies(shapes, sub, frame, solver.porous(), scene.fluid->porosity_lookup);
   const SettlingForce settling = settling_force(scene, shapes);
   if (settling.active) {
     // The controller (if any) adds its correction to this feed-forward (or, with
