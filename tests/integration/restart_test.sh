@@ -9,7 +9,8 @@
 #   4. SIGTERM to one fluid rank mid-run: both programs write a checkpoint, end with status 0
 #      and print the restart command; the restart reproduces the straight run byte for byte;
 #   5. refusals: a flipped byte in the populations, a truncated fluid half, a missing DEM
-#      half, another scene (viscosity changed), another DEM rank count.
+#      half, a missing DEM journal part, another scene (viscosity changed), another DEM rank
+#      count.
 # With a fifth argument `quick`, parts 1 to 4 only; with `overlap`, parts 1 to 4 with
 # coupling.overlap (the fluid one step behind; it waits for the states at agreement steps,
 # so checkpoints hold one step of both programs and the restart is still byte for byte).
@@ -54,6 +55,9 @@ run half.log "$nf" "$nd" || { cat half.log; fail "first half"; }
 n=$(ls "$ckdir"/*.fluid.h5 | wc -l)
 [ "$n" = 2 ] || { ls "$ckdir"; fail "checkpoint_keep 2 left $n fluid halves"; }
 [ -f "$ckdir/restart_sphere_step0000000040.dem.h5" ] || { ls "$ckdir"; fail "no step-40 DEM half"; }
+# The DEM half's journal: one part per DEM rank, pruned with its half.
+n=$(ls "$ckdir"/*.dem.rank*.h5 | wc -l)
+[ "$n" = $((2 * nd)) ] || { ls "$ckdir"; fail "$n DEM journal parts, expected 2 x $nd"; }
 cp -r "$ckdir" saved_checkpoints
 cp restart_sphere_bodies.csv half_bodies.csv
 cp restart_sphere_momentum.csv half_momentum.csv
@@ -134,6 +138,8 @@ fresh && truncate -s 2000 "$prefix.fluid.h5"
 refuse truncated "not a readable checkpoint" "$nf" "$nd"
 fresh && rm "$prefix.dem.h5"
 refuse missing_half "is missing; a restart needs both halves" "$nf" "$nd" "$prefix.fluid.h5"
+fresh && rm "$prefix.dem.rank0.h5"
+refuse missing_part "journal part .* of DEM rank 0 is missing" "$nf" "$nd"
 fresh && sed -i 's/viscosity: 1.0e-6/viscosity: 1.1e-6/' scene.yaml
 refuse other_scene "written for another scene" "$nf" "$nd"
 scene 2.0e-2
