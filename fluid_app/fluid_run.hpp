@@ -20,6 +20,7 @@
 #include "coupler_lib/app/run_app.hpp"
 #include "coupler_lib/geometry/shape.hpp"
 #include "fluid_app/fluid_solver.hpp"
+#include "fluid_app/parallel/rebalance.hpp"
 
 namespace lbdem {
 
@@ -35,13 +36,17 @@ class FluidRun {
 
   // Collective. Logs the derived numbers, throws SceneError if the scene is out of range.
   // `shapes`: the scene's shape catalogue, for fluid.decomposition: balanced (the initial
-  // bodies' work); empty for a scene without bodies.
-  explicit FluidRun(AppContext& ctx, const std::vector<Shape>& shapes = {});
+  // bodies' work); empty for a scene without bodies. `restart`: the layout a restart chose
+  // (parallel/rebalance.hpp), which replaces the initial bodies' work.
+  explicit FluidRun(AppContext& ctx, const std::vector<Shape>& shapes = {},
+                    const LayoutChoice* restart = nullptr);
 
   FluidSolver<T>& solver() { return *solver_; }
   const FluidParams& params() const { return params_; }
   std::int64_t total_steps() const { return total_steps_; }
   bool done() const { return solver_->steps() >= total_steps_; }
+  // The slice weights the decomposition's cuts were placed by (empty: regular blocks).
+  const SliceWeights& layout_weights() const { return layout_weights_; }
   StepInfo info() const;
 
   // Called after every step (and once with step 0 by start()), e.g. by output writers.
@@ -52,6 +57,7 @@ class FluidRun {
  private:
   AppContext& ctx_;
   FluidParams params_;
+  SliceWeights layout_weights_;
   std::unique_ptr<FluidSolver<T>> solver_;
   std::int64_t total_steps_ = 0;
   std::unique_ptr<Progress> progress_;

@@ -18,6 +18,7 @@
 //     loads: penalization             # or momentum_exchange (docs/method-loads.md)
 //     decomposition: regular          # or balanced: cuts by the bodies' work (docs/scaling.md)
 //     covered_cell_weight: 10         # work of a covered cell in fluid cells (balanced)
+//     rebalance_above: 1.1            # restart: recut above this measured imbalance (balanced)
 //     boundaries:
 //       x_min: periodic               # periodic faces must be paired
 //       x_max: periodic
@@ -38,7 +39,8 @@ enum class FaceType { periodic, wall, moving_wall, pressure };
 
 // How the fluid lattice is split over the fluid ranks (fluid_app/parallel/decomposition.hpp):
 // equal blocks, or a rectilinear grid of blocks whose cuts balance the weighted work of the
-// initial bodies (cells a body covers cost covered_cell_weight fluid cells).
+// initial bodies (cells a body covers cost covered_cell_weight fluid cells), and at a restart
+// the work measured at the checkpoint when its imbalance exceeds rebalance_above.
 enum class DecompositionKind { regular, balanced };
 
 // One face of the box. Faces are indexed 2*axis + side (side 0 = min, 1 = max):
@@ -93,6 +95,7 @@ struct FluidParams {
   LoadMethod loads = LoadMethod::penalization;
   DecompositionKind decomposition = DecompositionKind::regular;
   double covered_cell_weight = 10;      // work of a covered cell / a fluid cell (balanced split)
+  double rebalance_above = 1.1;         // restart: recut when the checkpoint's imbalance is above
   std::array<FaceBoundary, 6> faces{};  // default: triply periodic
   UnitConverter units;
   FluidOutputParams output;  // fluid.output, fluid.stability, fluid.validation

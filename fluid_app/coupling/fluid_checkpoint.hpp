@@ -11,8 +11,13 @@
 //                     flow (SolverMemory).
 //   covered           per fluid rank and body: the covered fluid momentum Q and moment L of
 //                     the last step, which the next penalization load differences against.
-//   attributes        the checkpoint header, a checksum of the populations, and the length
-//                     of the CSV series at the checkpoint (series, momentum audit).
+//   measured_work_{x,y,z}, layout_weights_{x,y,z}
+//                     the work of the lattice per slice of cells measured at the checkpoint and
+//                     the slice weights its cuts came from (absent: regular blocks), for a
+//                     restart's layout (fluid_app/parallel/rebalance.hpp).
+//   attributes        the checkpoint header, a checksum of the populations, the length of the
+//                     CSV series at the checkpoint (series, momentum audit), and the load
+//                     imbalance of the measured work.
 // The porosity field is not stored: it is rebuilt from the body states of the checkpoint's
 // step, which the DEM side sends again at the restart.
 #include <array>
@@ -23,6 +28,7 @@
 
 #include "coupler_lib/coupling/checkpoint_files.hpp"
 #include "fluid_app/fluid_solver.hpp"
+#include "fluid_app/parallel/rebalance.hpp"
 
 namespace lbdem {
 
@@ -42,7 +48,11 @@ struct SeriesLengths {
 template <class T>
 void write_fluid_checkpoint(const std::string& prefix, const CheckpointHeader& header,
                             const FluidSolver<T>& solver, std::span<const CoveredRecord> mine,
-                            const SeriesLengths& lengths);
+                            const SeriesLengths& lengths, const CheckpointWork& work);
+
+// Collective: the work and layout record of fluid_half(prefix), before the solver is built.
+// Throws std::runtime_error naming the file when it is unreadable.
+CheckpointWork read_checkpoint_work(const std::string& prefix, MPI_Comm comm);
 
 struct FluidRestart {
   CheckpointHeader header;
