@@ -169,7 +169,8 @@ void check_checkpoint_header(const std::string& path, const CheckpointHeader& fo
     refuse("written for another scene ('" + found.scene_file + "', fingerprint " +
            hex(found.fingerprint) + "; this scene '" + expected.scene_file + "' has " +
            hex(expected.fingerprint) +
-           "); only time.end, outputs, log and checkpoint keys may change at a restart");
+           "); only time.end, outputs, log, checkpoint and fluid layout keys may change at a "
+           "restart");
   if (same_ranks_needed && found.side == "dem" && found.dem_ranks != expected.dem_ranks)
     refuse("written by " + std::to_string(found.dem_ranks) + " dem_app ranks, this run has " +
            std::to_string(expected.dem_ranks) +

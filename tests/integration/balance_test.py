@@ -81,7 +81,9 @@ try:
     at = len(cmd) - 1
     cmd[at:at] = ["--restart", restart]
     _, out = run.execute(cmd, second, timeout=300)
-    if "rebalanced by the work measured at the checkpoint" not in out:
+    print(re.search(r"decomposition .*", out).group(0))
+    # The bed's regular split is far above fluid.rebalance_above: the restart must recut.
+    if bench == "bed64_c27.yaml" and "rebalanced by the work measured" not in out:
         print(out)
         raise SystemExit("FAIL: the restart did not rebalance")
     figures["rebalanced at the restart"] = figures_of(second)
