@@ -25,9 +25,9 @@ PauseSteps pause_steps(const Scene& scene, const Schedule& schedule) {
 StallWatch::StallWatch(double timeout_s, const PeerInfo& peer)
     : timeout_s_(timeout_s), peer_(peer.program + " (the " + peer.side + " side)") {}
 
-void StallWatch::begin(std::int64_t step, const char* what) {
+void StallWatch::begin(std::int64_t step, Wait kind) {
   step_ = step;
-  what_ = what;
+  kind_ = kind;
   wait_start_ = Clock::now();
 }
 
@@ -40,7 +40,7 @@ void StallWatch::end() {
         std::max(slowest_gap_s_, std::chrono::duration<double>(now - last_end_).count());
   last_end_ = now;
   last_completed_ = step_;
-  ++completed_;
+  if (kind_ == Wait::packets) ++completed_;
 }
 
 double StallWatch::limit_s() const {
@@ -59,7 +59,9 @@ void StallWatch::check() const {
   m << peer_ << " has sent nothing for " << waited << " s (limit " << limit << " s, "
     << (timeout_s_ > 0 ? "coupling.stall_timeout"
                        : "automatic: coupling.stall_timeout not set, docs/reliability.md")
-    << ") while this program waits for " << what_ << " at step " << step_
+    << ") while this program waits for "
+    << (kind_ == Wait::packets ? "its packets" : "the agreement of both programs") << " at step "
+    << step_
     << ": one of its ranks is stopped, hung or deadlocked; this program's last completed exchange: "
     << (last_completed_ >= 0 ? "step " + std::to_string(last_completed_) : std::string("none"))
     << "; last checkpoint: "

@@ -54,8 +54,11 @@ class StallWatch {
 
   void expect_pauses(const PauseSteps& pauses) { pauses_ = pauses; }
 
-  // A wait for the other program's part of exchange `step`; `what` names it in the message.
-  void begin(std::int64_t step, const char* what = "its packets");
+  // What a wait is for. The set-up allowance counts packet waits only, so an agreement early
+  // in the run does not use it up.
+  enum class Wait { packets, agreement };
+  // A wait for the other program's part of exchange `step`.
+  void begin(std::int64_t step, Wait kind = Wait::packets);
   void check() const;  // throws SideError when the current wait is too long
   void end();          // that wait completed
 
@@ -67,9 +70,9 @@ class StallWatch {
   std::string peer_;
   PauseSteps pauses_;
   std::int64_t step_ = 0;
-  const char* what_ = "its packets";
+  Wait kind_ = Wait::packets;
   std::int64_t last_completed_ = -1;  // -1: none yet
-  int completed_ = 0;                 // waits completed
+  int completed_ = 0;                 // packet waits completed
   Clock::time_point wait_start_{}, last_end_{};
   double slowest_gap_s_ = 0;
 };

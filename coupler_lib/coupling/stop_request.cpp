@@ -40,7 +40,7 @@ int agree_flags(int mine, const World& world, std::int64_t step) {
   // The same watch as the exchanges: the other program may be running its stability check
   // (a pass over the lattice) or writing a checkpoint before it joins.
   StallWatch& stall = world.stall();
-  stall.begin(step, "the agreement of both programs");
+  stall.begin(step, StallWatch::Wait::agreement);
   wait_request(req, world.wait(), [&] {
     world.check_peer();
     stall.check();

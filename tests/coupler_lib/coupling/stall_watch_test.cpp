@@ -101,9 +101,27 @@ TEST(StallWatch, AWaitAroundACheckpointGetsThePauseAllowanceWithoutLiftingTheSte
   EXPECT_DOUBLE_EQ(w.limit_s(), StallWatch::kAutomaticFloor);
 }
 
+TEST(StallWatch, AnAgreementDuringTheSetUpDoesNotUseUpItsAllowance) {
+  StallWatch w(0, dem_peer());
+  // An agreement after each of the set-up's packet waits but the last.
+  for (int k = 0; k + 1 < StallWatch::kSetUpWaits; ++k) {
+    w.begin(k / 2);
+    w.end();
+    w.begin(k / 2, StallWatch::Wait::agreement);
+    EXPECT_DOUBLE_EQ(w.limit_s(), StallWatch::kSetUpLimit);
+    w.end();
+  }
+  // The last packet wait of the set-up still has its allowance, the next one not.
+  w.begin(1);
+  EXPECT_DOUBLE_EQ(w.limit_s(), StallWatch::kSetUpLimit);
+  w.end();
+  w.begin(2);
+  EXPECT_DOUBLE_EQ(w.limit_s(), StallWatch::kAutomaticFloor);
+}
+
 TEST(StallWatch, TheMessageNamesWhatThisProgramWaitsFor) {
   StallWatch w(0.01, dem_peer());
-  w.begin(100, "the agreement of both programs");
+  w.begin(100, StallWatch::Wait::agreement);
   std::this_thread::sleep_for(std::chrono::milliseconds(30));
   try {
     w.check();
