@@ -48,7 +48,8 @@ inline constexpr WordTable<LoadMethod, 2> kLoadMethodWords{
 
 // fluid.decomposition: how the fluid lattice is split over the fluid ranks
 // (fluid_app/parallel/decomposition.hpp): equal blocks, or a rectilinear grid of blocks whose
-// cuts balance the weighted work of the initial bodies.
+// cuts balance the weighted work of the initial bodies, and at a restart the work measured at
+// the checkpoint when its imbalance exceeds fluid.rebalance_above.
 enum class DecompositionKind { regular, balanced };
 inline constexpr WordTable<DecompositionKind, 2> kDecompositionWords{
     {{"regular", DecompositionKind::regular}, {"balanced", DecompositionKind::balanced}}};

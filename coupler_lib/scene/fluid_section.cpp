@@ -178,6 +178,13 @@ const MappingSchema& fluid_schema() {
                    "(measured: docs/scaling.md)")
            .or_default(10.0)
            .within(Bounds::at_least(1.0)),
+       key::number("rebalance_above",
+                   "for decomposition: balanced, at a restart: the load imbalance (max / mean of "
+                   "the weighted work) measured at the checkpoint above which the lattice is cut "
+                   "anew by the work measured there; at or below it the checkpoint's cuts are "
+                   "kept (docs/scaling.md)")
+           .or_default(1.1)
+           .within(Bounds::at_least(1.0)),
        key::section("boundaries", boundaries_schema(), "per-face boundary conditions")
            .absent_means("triply periodic"),
        key::section("output", fluid_output_schema(), "field files and time series; absent: none")
@@ -236,6 +243,7 @@ FluidParams parse_fluid(Section& s) {
   p.loads = value_of(kLoadMethodWords, s.choice("loads"));
   p.decomposition = value_of(kDecompositionWords, s.choice("decomposition"));
   p.covered_cell_weight = s.get<double>("covered_cell_weight");
+  p.rebalance_above = s.get<double>("rebalance_above");
   {
     auto b = s.section_or_defaults("boundaries");
     for (int f = 0; f < 6; ++f) p.faces[f] = parse_face(b, f);

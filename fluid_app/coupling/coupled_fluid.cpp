@@ -26,6 +26,7 @@
 #include "fluid_app/parallel/balance.hpp"
 #include "fluid_app/run/fluid_run.hpp"
 #include "fluid_app/run/run_watch.hpp"
+#include "fluid_app/parallel/rebalance.hpp"
 
 namespace lbdem {
 
@@ -138,19 +139,31 @@ int run_typed(AppContext& ctx) {
         "cells, so the fluid sees every surface moved inward by that much (docs/method.md)",
         scene.fluid->tau, word_of(kPorosityLookupWords, scene.fluid->porosity_lookup),
         *band_radius_excess_cells(scene.fluid->tau, scene.fluid->porosity_lookup));
-  FluidRun<T> run(ctx, shapes);
+  // A restart's layout comes from the checkpoint's record of the work (rebalance.hpp).
+  std::string restart_from;
+  LayoutChoice layout;
+  if (!ctx.cli.restart.empty()) {
+    try {
+      restart_from = restart_prefix(ctx.cli.restart);
+      layout =
+          restart_layout(*scene.fluid, read_checkpoint_work(restart_from, ctx.side_comm), ctx.size);
+    } catch (const std::runtime_error& e) {
+      throw SideError(e.what());
+    }
+  }
+  FluidRun<T> run(ctx, shapes, restart_from.empty() ? nullptr : &layout);
   FluidSolver<T>& solver = run.solver();
   int solver_rank = 0;
   MPI_Comm_rank(solver.comm(), &solver_rank);
   std::optional<FluidRestart> restart;
   std::vector<T> restored;  // this rank's populations from the checkpoint
-  if (!ctx.cli.restart.empty()) {
+  if (!restart_from.empty()) {
     try {
-      const std::string prefix = restart_prefix(ctx.cli.restart);
-      restart = read_fluid_checkpoint(prefix, session.header(0), solver, restored);
-      session.resume(prefix, restart->header.step);
-      ctx.log->info("restart from {} at step {} (t = {:.6e} s; written by {} fluid ranks)", prefix,
-                    restart->header.step, restart->header.time, restart->header.fluid_ranks);
+      restart = read_fluid_checkpoint(restart_from, session.header(0), solver, restored);
+      session.resume(restart_from, restart->header.step);
+      ctx.log->info("restart from {} at step {} (t = {:.6e} s; written by {} fluid ranks)",
+                    restart_from, restart->header.step, restart->header.time,
+                    restart->header.fluid_ranks);
     } catch (const std::runtime_error& e) {
       throw SideError(e.what());
     }
@@ -206,7 +219,7 @@ int run_typed(AppContext& ctx) {
   if (audit && !restart) audit->write(0, 0.0, solver, first);
   bodies.update(first);
   if (restart)
-    restore_covered(bodies, restart->covered, restart->header.fluid_ranks == ctx.size, solver_rank,
+    restore_covered(bodies, restart->covered, layout.same_as_checkpoint, solver_rank,
                     solver.comm());
   else
     run.start();
@@ -219,9 +232,17 @@ int run_typed(AppContext& ctx) {
     SeriesLengths lengths;
     lengths.series = watch.series_bytes();
     if (audit) lengths.momentum = audit->bytes();
+    const PorousField<T>& field = solver.porous();
+    CheckpointWork work = measure_work(
+        solver.box(), field.active ? std::span<const float>(field.d) : std::span<const float>(),
+        scene.fluid->covered_cell_weight, solver.comm());
+    work.layout = run.layout_weights();
+    if (ctx.rank == 0)
+      ctx.log->info("checkpoint at step {}: load imbalance of the weighted work {:.3f}",
+                    header.step, work.imbalance);
     write_fluid_checkpoint(prefix, header, solver,
                            run.control() ? run.control()->integral() : std::array<double, 3>{},
-                           covered, lengths);
+                           covered, lengths, work);
   });
 
   while (session.ongoing()) {

@@ -11,8 +11,13 @@
 //                     applied impulse, mean flow (SolverMemory and MeanFlowControl::integral).
 //   covered           per fluid rank and body: the covered fluid momentum Q and moment L of
 //                     the last step, which the next penalization load differences against.
-//   attributes        the checkpoint header, a checksum of the populations, and the length
-//                     of the CSV series at the checkpoint (series, momentum audit).
+//   measured_work_{x,y,z}, layout_weights_{x,y,z}
+//                     the work of the lattice per slice of cells measured at the checkpoint and
+//                     the slice weights its cuts came from (absent: regular blocks), for a
+//                     restart's layout (fluid_app/parallel/rebalance.hpp).
+//   attributes        the checkpoint header, a checksum of the populations, the length of the
+//                     CSV series at the checkpoint (series, momentum audit), and the load
+//                     imbalance of the measured work.
 // The porosity field is not stored: it is rebuilt from the body states of the checkpoint's
 // step, which the DEM side sends again at the restart.
 #include <array>
@@ -22,6 +27,7 @@
 #include <vector>
 
 #include "coupler_lib/coupling/checkpoint_files.hpp"
+#include "fluid_app/parallel/rebalance.hpp"
 #include "fluid_app/solver/fluid_solver.hpp"
 
 namespace lbdem {
@@ -44,7 +50,12 @@ template <class T>
 void write_fluid_checkpoint(const std::string& prefix, const CheckpointHeader& header,
                             const FluidSolver<T>& solver,
                             const std::array<double, 3>& control_integral,
-                            std::span<const CoveredRecord> mine, const SeriesLengths& lengths);
+                            std::span<const CoveredRecord> mine, const SeriesLengths& lengths,
+                            const CheckpointWork& work);
+
+// Collective: the work and layout record of fluid_half(prefix), before the solver is built.
+// Throws std::runtime_error naming the file when it is unreadable.
+CheckpointWork read_checkpoint_work(const std::string& prefix, MPI_Comm comm);
 
 struct FluidRestart {
   CheckpointHeader header;

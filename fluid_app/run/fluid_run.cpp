@@ -44,20 +44,24 @@ void log_fluid_setup(const AppContext& ctx, const FluidParams& p) {
 }
 
 template <class T>
-FluidRun<T>::FluidRun(AppContext& ctx, const std::vector<Shape>& shapes)
+FluidRun<T>::FluidRun(AppContext& ctx, const std::vector<Shape>& shapes,
+                      const LayoutChoice* restart)
     : ctx_(ctx), params_(*ctx.scene.fluid) {
   log_fluid_setup(ctx, params_);
-  const bool balanced =
-      params_.decomposition == DecompositionKind::balanced && !ctx.scene.bodies.empty();
-  solver_ = std::make_unique<FluidSolver<T>>(
-      params_, ctx.side_comm, std::array<int, 3>{0, 0, 0},
-      balanced ? body_work_weights(params_, ctx.scene.bodies, shapes)
-               : std::array<std::vector<double>, 3>{});
+  std::string layout = "regular";
+  if (restart) {
+    layout_weights_ = restart->weights;
+    layout = restart->why;
+  } else if (params_.decomposition == DecompositionKind::balanced && !ctx.scene.bodies.empty()) {
+    layout_weights_ = body_work_weights(params_, ctx.scene.bodies, shapes);
+    layout = "balanced by the initial bodies' work";
+  }
+  solver_ = std::make_unique<FluidSolver<T>>(params_, ctx.side_comm, std::array<int, 3>{0, 0, 0},
+                                             layout_weights_);
   if (params_.control.enabled) control_ = std::make_unique<MeanFlowControl<T>>(*solver_, params_);
   const auto& d = solver_->decomposition();
   ctx.log->info("decomposition {} x {} x {} ranks ({}); kernel moves {} B per cell update",
-                d.dims()[0], d.dims()[1], d.dims()[2],
-                balanced ? "balanced by the initial bodies' work" : "regular",
+                d.dims()[0], d.dims()[1], d.dims()[2], layout,
                 FluidSolver<T>::bytes_per_cell_update(false));
   total_steps_ = step_count(ctx.scene.time.end, params_.units.dt);
   ctx.log->info("{} steps to t = {} s", total_steps_, ctx.scene.time.end);

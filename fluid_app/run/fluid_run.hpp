@@ -20,6 +20,7 @@
 #include "coupler_lib/app/run_app.hpp"
 #include "coupler_lib/geometry/shape.hpp"
 #include "fluid_app/forcing/mean_flow_control.hpp"
+#include "fluid_app/parallel/rebalance.hpp"
 #include "fluid_app/solver/fluid_solver.hpp"
 
 namespace lbdem {
@@ -36,8 +37,10 @@ class FluidRun {
 
   // Collective. Logs the derived numbers, throws SceneError if the scene is out of range.
   // `shapes`: the scene's shape catalogue, for fluid.decomposition: balanced (the initial
-  // bodies' work); empty for a scene without bodies.
-  explicit FluidRun(AppContext& ctx, const std::vector<Shape>& shapes = {});
+  // bodies' work); empty for a scene without bodies. `restart`: the layout a restart chose
+  // (parallel/rebalance.hpp), which replaces the initial bodies' work.
+  explicit FluidRun(AppContext& ctx, const std::vector<Shape>& shapes = {},
+                    const LayoutChoice* restart = nullptr);
 
   FluidSolver<T>& solver() { return *solver_; }
   // The mean-velocity controller, null unless fluid.mean_velocity_control is on.
@@ -45,6 +48,8 @@ class FluidRun {
   const FluidParams& params() const { return params_; }
   std::int64_t total_steps() const { return total_steps_; }
   bool done() const { return solver_->steps() >= total_steps_; }
+  // The slice weights the decomposition's cuts were placed by (empty: regular blocks).
+  const SliceWeights& layout_weights() const { return layout_weights_; }
   StepInfo info() const;
 
   // Called after every step (and once with step 0 by start()), e.g. by output writers.
@@ -55,6 +60,7 @@ class FluidRun {
  private:
   AppContext& ctx_;
   FluidParams params_;
+  SliceWeights layout_weights_;
   std::unique_ptr<FluidSolver<T>> solver_;
   std::unique_ptr<MeanFlowControl<T>> control_;
   std::int64_t total_steps_ = 0;
