@@ -4,11 +4,15 @@
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-set(lbdem_install_targets lbdem_geometry lbdem_scene lbdem_output lbdem_coupling lbdem_app
-                          coupler_lib fluid_core fluid_app clump_gen)
+set(lbdem_install_targets
+    lbdem_geometry lbdem_scene lbdem_output lbdem_coupling lbdem_app coupler_lib
+    fluid_lattice fluid_kernel fluid_parallel fluid_boundary fluid_solver fluid_forcing fluid_hlbm
+    fluid_analytic fluid_output fluid_validation fluid_stability fluid_run fluid_coupling
+    fluid_core fluid_app clump_gen)
 set(lbdem_header_dirs coupler_lib fluid_app)
 if(LBDEM_WITH_LAMMPS)
-  list(APPEND lbdem_install_targets dem_core dem_app)
+  list(APPEND lbdem_install_targets dem_contact dem_lubrication dem_loads dem_setup dem_engine
+                                    dem_output dem_run dem_coupling dem_core dem_app)
   list(APPEND lbdem_header_dirs dem_app)
 endif()
 

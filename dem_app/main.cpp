@@ -1,9 +1,9 @@
 // dem_app: the discrete element side of the co-simulation (LAMMPS as a library). A scene
-// without a fluid section runs here alone; see dem_app/dem_run.hpp.
+// without a fluid section runs here alone; see dem_app/run/dem_run.hpp.
 #include "coupler_lib/app/run_app.hpp"
 #include "coupler_lib/scene/shape_catalogue.hpp"
 #include "dem_app/coupling/coupled_dem.hpp"
-#include "dem_app/dem_run.hpp"
+#include "dem_app/run/dem_run.hpp"
 
 int main(int argc, char** argv) {
   const lbdem::AppInfo info{"dem", "dem_app", "rigid multi-sphere bodies and contacts (LAMMPS)"};

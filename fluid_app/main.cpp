@@ -1,7 +1,7 @@
 // fluid_app: the lattice Boltzmann side of the co-simulation.
 #include "coupler_lib/app/run_app.hpp"
 #include "fluid_app/coupling/coupled_fluid.hpp"
-#include "fluid_app/fluid_run.hpp"
+#include "fluid_app/run/fluid_run.hpp"
 
 int main(int argc, char** argv) {
   const lbdem::AppInfo info{"fluid", "fluid_app",

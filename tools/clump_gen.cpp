@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -38,7 +39,7 @@ SHAPE:
 
 struct Options {
   ShapeParams shape;
-  std::string method;
+  std::optional<ClumpSource> method;  // surface | fill
   int grid = 0;
   double radius_ratio = 1.0;
   bool center_sphere = true;
@@ -94,6 +95,7 @@ Options parse(int argc, char** argv) {
   auto& s = o.shape;
   s.name = "shape";
   s.where = "clump_gen";
+  std::optional<ShapeKind> kind;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&]() -> std::string {
@@ -101,10 +103,11 @@ Options parse(int argc, char** argv) {
       return argv[++i];
     };
     if (a == "--shape") {
-      s.kind = value();
-      if (s.kind != "sphere" && s.kind != "cube" && s.kind != "cuboid" && s.kind != "ellipsoid")
+      const std::string word = value();
+      kind = find_word(kShapeKindWords, word);
+      if (!kind || *kind == ShapeKind::stl)
         throw std::invalid_argument("--shape: expected sphere, cube, cuboid or ellipsoid, got '" +
-                                    s.kind + "' (use --stl FILE for meshes)");
+                                    word + "' (use --stl FILE for meshes)");
     } else if (a == "--diameter" || a == "--edge") {
       s.size = number(a, value());
       s.extents = {s.size, s.size, s.size};
@@ -114,14 +117,15 @@ Options parse(int argc, char** argv) {
       const double m = std::max({s.extents[0], s.extents[1], s.extents[2]});
       s.size = a == "--edges" ? m : 2 * m;
     } else if (a == "--stl") {
-      s.kind = "stl";
+      kind = ShapeKind::stl;
       s.file = value();
     } else if (a == "--scale") {
       s.scale = number(a, value());
     } else if (a == "--method") {
-      o.method = value();
-      if (o.method != "surface" && o.method != "fill")
-        throw std::invalid_argument("--method: expected surface or fill, got '" + o.method + "'");
+      const std::string word = value();
+      o.method = find_word(kClumpMethodWords, word);
+      if (!o.method)
+        throw std::invalid_argument("--method: expected surface or fill, got '" + word + "'");
     } else if (a == "--grid") {
       o.grid = integer(a, value(), 2);
     } else if (a == "--radius-ratio") {
@@ -147,19 +151,21 @@ Options parse(int argc, char** argv) {
       throw std::invalid_argument("unknown argument '" + a + "'");
     }
   }
-  if (s.kind.empty()) throw std::invalid_argument("give a shape: --shape KIND ... or --stl FILE");
-  if (s.kind != "stl" && !(s.size > 0))
-    throw std::invalid_argument("--shape " + s.kind + " needs its size (" +
-                                (s.kind == "sphere"   ? "--diameter"
-                                 : s.kind == "cube"   ? "--edge"
-                                 : s.kind == "cuboid" ? "--edges"
-                                                      : "--semi-axes") +
+  if (!kind) throw std::invalid_argument("give a shape: --shape KIND ... or --stl FILE");
+  s.kind = *kind;
+  if (s.kind != ShapeKind::stl && !(s.size > 0))
+    throw std::invalid_argument("--shape " + std::string(word_of(kShapeKindWords, s.kind)) +
+                                " needs its size (" +
+                                (s.kind == ShapeKind::sphere   ? "--diameter"
+                                 : s.kind == ShapeKind::cube   ? "--edge"
+                                 : s.kind == ShapeKind::cuboid ? "--edges"
+                                                               : "--semi-axes") +
                                 ")");
   if (!o.export_stl.empty()) return o;
-  if (o.method.empty()) throw std::invalid_argument("give --method surface|fill or --export-stl");
-  if (o.method == "surface" && o.grid == 0)
+  if (!o.method) throw std::invalid_argument("give --method surface|fill or --export-stl");
+  if (*o.method == ClumpSource::surface && o.grid == 0)
     throw std::invalid_argument("--method surface needs --grid N");
-  if (o.method == "fill" && o.spheres == 0)
+  if (*o.method == ClumpSource::fill && o.spheres == 0)
     throw std::invalid_argument("--method fill needs --spheres N");
   if (o.out.empty()) throw std::invalid_argument("give the output file: --out FILE.clump");
   return o;
@@ -169,15 +175,16 @@ void export_stl(const Options& o) {
   const auto& s = o.shape;
   const Eigen::Vector3d e(s.extents[0], s.extents[1], s.extents[2]);
   TriangleMesh mesh;
-  if (s.kind == "cube" || s.kind == "cuboid") {
+  if (s.kind == ShapeKind::stl)
+    throw std::invalid_argument("--export-stl needs an analytic --shape");
+  if (!extents_are_semi_axes(s.kind)) {
     mesh = box_mesh(e);
-  } else if (s.kind == "sphere" || s.kind == "ellipsoid") {
+  } else {
     mesh = icosphere_mesh(1.0, o.ico_levels);
     transform_mesh(mesh, e.asDiagonal(), Eigen::Vector3d::Zero());
-  } else {
-    throw std::invalid_argument("--export-stl needs an analytic --shape");
   }
-  o.binary ? write_stl_binary(o.export_stl, mesh) : write_stl_ascii(o.export_stl, mesh, s.kind);
+  o.binary ? write_stl_binary(o.export_stl, mesh)
+           : write_stl_ascii(o.export_stl, mesh, std::string(word_of(kShapeKindWords, s.kind)));
   std::printf("%s: %zu triangles, volume %.6g (analytic %.6g)\n", o.export_stl.c_str(),
               mesh.triangles.size(), signed_volume(mesh), make_solid(s).exact_volume());
 }
@@ -188,12 +195,12 @@ void generate(const Options& o) {
   const double h = L / o.voxels;
   const Voxels vox = voxelize(solid, h, 3);
   const MassProperties mass = mass_properties(solid);
-  const Clump clump = o.method == "surface"
+  const Clump clump = *o.method == ClumpSource::surface
                           ? surface_clump(solid, vox, {o.grid, o.radius_ratio, o.center_sphere})
                           : fill_clump(solid, vox, {o.spheres});
   const ClumpQuality q = clump_quality(clump, vox);
   std::ostringstream method, lattice, err, dev;
-  if (o.method == "surface")
+  if (*o.method == ClumpSource::surface)
     method << "method: surface grid=" << o.grid << " radius_ratio=" << o.radius_ratio
            << " center_sphere=" << (o.center_sphere ? "yes" : "no");
   else
@@ -207,8 +214,9 @@ void generate(const Options& o) {
       << " of the size; two-sided, +-h/2)";
   const std::vector<std::string> header = {
       "lbdem clump file: one sphere per line, x y z r, shape frame (voxel centroid at origin)",
-      "shape: " + (o.shape.kind == "stl" ? o.shape.file + " scale " + std::to_string(o.shape.scale)
-                                         : solid.describe()),
+      "shape: " + (o.shape.kind == ShapeKind::stl
+                       ? o.shape.file + " scale " + std::to_string(o.shape.scale)
+                       : solid.describe()),
       method.str(),
       "spheres: " + std::to_string(clump.size()),
       lattice.str(),

@@ -26,7 +26,7 @@
 #include <string>
 
 #include "coupler_lib/geometry/build_shape.hpp"
-#include "dem_app/lammps_engine.hpp"
+#include "dem_app/engine/lammps_engine.hpp"
 
 namespace {
 
@@ -79,7 +79,7 @@ lbdem::DemSetup make_setup(const Options& o, bool loads, bool lubrication) {
   const double a = 0.01;  // cube edge, m
   lbdem::ShapeParams p;
   p.name = "cube";
-  p.kind = "cube";
+  p.kind = lbdem::ShapeKind::cube;
   p.size = a;
   p.where = "dem_bench";
   lbdem::DemSetup s;

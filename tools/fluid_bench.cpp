@@ -24,7 +24,7 @@
 #include <string>
 #include <vector>
 
-#include "fluid_app/fluid_solver.hpp"
+#include "fluid_app/solver/fluid_solver.hpp"
 
 namespace {
 

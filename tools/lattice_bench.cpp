@@ -32,8 +32,8 @@
 
 #include "coupler_lib/scene/scene.hpp"
 #include "coupler_lib/scene/shape_catalogue.hpp"
-#include "fluid_app/fluid_solver.hpp"
 #include "fluid_app/hlbm/body_field.hpp"
+#include "fluid_app/solver/fluid_solver.hpp"
 
 namespace {
 
@@ -113,8 +113,7 @@ int main(int argc, char** argv) {
     }
     hlbm::Subdomain sub{with.box(), {fp.periodic(0), fp.periodic(1), fp.periodic(2)}};
     hlbm::LatticeFrame frame{Eigen::Vector3d::Zero(), fp.units};
-    hlbm::BodyField<double> bodies(shapes, sub, frame, with.porous(),
-                                   hlbm::porosity_lookup_from(fp.porosity_lookup));
+    hlbm::BodyField<double> bodies(shapes, sub, frame, with.porous(), fp.porosity_lookup);
     std::mt19937_64 rng(7);
     std::normal_distribution<double> g;
     std::vector<BodyState> states;

@@ -33,6 +33,7 @@
 namespace {
 
 using lbdem::BodyState;
+using lbdem::PorosityLookup;
 using namespace lbdem::hlbm;
 
 // FNV-1a over the bytes of an array, continuing from h.

@@ -13,7 +13,8 @@ that resolution; see README, "Validation").
     validate_case.py invariance --build build --scene S --ranks-list 1:1 3:2 --tolerance 1e-12
     validate_case.py rotation --build build --scene S --expect broadside --max-tilt-change 20
     validate_case.py spin     --build build --scene S --tolerance 0.1
-    validate_case.py momentum --build build --scene S --ranks 3:2 --tolerance 1e-9
+    validate_case.py momentum --build build --scene S --ranks 3:2 --tolerance 1e-9 \
+                              [--closed] [--angular 1e-9]
 
 peak takes the largest speed after a moving average over one lattice-crossing period dx / u
 (the speed ripples as the body crosses cells). --known-off LOW:HIGH judges a case known to be
@@ -333,26 +334,56 @@ def cmd_momentum(args):
     def total(r, a):
         return r[f"fluid_p{a}"] + r[f"bodies_p{a}"] - r[f"applied_p{a}"]
 
-    # Scale: the largest momentum the bodies carry (the fluid carries about the opposite).
-    scale = max(abs(r[f"bodies_p{a}"]) for r in rows for a in axes)
+    # Scale: the largest momentum the bodies carry (the fluid carries about the opposite), or
+    # the one the command states for a scene whose bodies carry none (a body spinning in place).
+    scale = args.scale or max(abs(r[f"bodies_p{a}"]) for r in rows for a in axes)
     worst = max(abs(total(r, a) - total(rows[0], a)) for r in rows for a in axes)
     applied = max(abs(r[f"applied_p{a}"]) for r in rows for a in axes)
     steps = int(rows[-1]["step"])
     error = worst / scale
-    print(f"momentum audit: {steps} steps, {len(rows)} rows; largest body momentum {scale:.4e} N s, "
+    print(f"momentum audit: {steps} steps, {len(rows)} rows; momentum scale {scale:.4e} N s, "
           f"largest applied impulse {applied:.4e} N s; largest change of fluid + bodies - applied "
-          f"{worst:.3e} N s = {error:.2e} of the body momentum; ranks {args.ranks}, wall time "
+          f"{worst:.3e} N s = {error:.2e} of the momentum scale; ranks {args.ranks}, wall time "
           f"{wall:.1f} s")
     s = io.load_scene(args.scene, args.build)
     append_row(case_name(args), "", s["fluid"]["tau"], "momentum imbalance / body momentum", 0,
                f"{error:.3g}", f"{error:.3g}", wall, args.ranks)
+    ok = True
     if steps < args.min_steps:
         print(f"FAILED: {steps} steps, the audit needs at least {args.min_steps}")
-        return 1
+        ok = False
     if error > args.tolerance:
         print(f"FAILED: imbalance {error:.2e} above the tolerance {args.tolerance:.2e}")
-        return 1
-    return 0
+        ok = False
+    if args.closed:
+        # The external forces cancel (the exact feed-forward force, or none): fluid + bodies
+        # itself, without the applied impulse, must stay at its start value.
+        drift = max(abs(r[f"fluid_p{a}"] + r[f"bodies_p{a}"] - rows[0][f"fluid_p{a}"]
+                        - rows[0][f"bodies_p{a}"]) for r in rows for a in axes) / scale
+        print(f"[validation] {case_name(args)}: fluid + bodies stays at its start value, largest "
+              f"change relative to the momentum scale error {drift:.3e}, tolerance "
+              f"{args.tolerance:.1e} (run time {wall:.1f} s, ranks {args.ranks})")
+        if not drift <= args.tolerance:
+            print(f"FAILED: fluid + bodies moved by {drift:.2e} of the momentum scale, above "
+                  f"{args.tolerance:.2e}")
+            ok = False
+    if args.angular is not None:
+        # Angular momentum about the box centre (no external torque, before any disturbance
+        # reaches the box's seam: the scene's duration sees to that).
+        def spin(r, a):
+            return r[f"fluid_l{a}"] + r[f"bodies_l{a}"]
+        # Scale: the angular momentum the fluid received (the angular impulse of the loads).
+        gained = max(abs(r[f"fluid_l{a}"] - rows[0][f"fluid_l{a}"]) for r in rows for a in axes)
+        drift_l = max(abs(spin(r, a) - spin(rows[0], a)) for r in rows for a in axes) / gained
+        body_l = max(abs(r[f"bodies_l{a}"]) for r in rows for a in axes)
+        print(f"[validation] {case_name(args)}: angular momentum about the box centre, largest "
+              f"change of fluid + bodies relative to the angular momentum the fluid gained "
+              f"({gained:.4e} N m s; the body's largest {body_l:.4e}) error {drift_l:.3e}, "
+              f"tolerance {args.angular:.1e} (run time {wall:.1f} s, ranks {args.ranks})")
+        if not drift_l <= args.angular:
+            print(f"FAILED: angular momentum moved by {drift_l:.2e}, above {args.angular:.2e}")
+            ok = False
+    return 0 if ok else 1
 
 
 def band_arg(text):
@@ -410,6 +441,15 @@ def main():
                            help="largest relative difference of the load and rho g L^3")
         if name == "momentum":
             q.add_argument("--min-steps", type=int, default=1000)
+            q.add_argument("--scale", type=float, default=None, metavar="N_S",
+                           help="momentum scale of the linear checks, N s (default: the largest "
+                                "body momentum)")
+            q.add_argument("--closed", action="store_true",
+                           help="no net external force: fluid + bodies itself must stay at its "
+                                "start value (within --tolerance)")
+            q.add_argument("--angular", type=float, default=None, metavar="TOL",
+                           help="also check the angular momentum about the box centre stays at "
+                                "its start value within TOL of the body's")
         if name == "rotation":
             q.add_argument("--expect", choices=["keep", "change", "broadside"], default="change")
             q.add_argument("--max-tilt-change", type=float, default=2.0)

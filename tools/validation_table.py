@@ -41,7 +41,7 @@ CASE = re.compile(r"^(?P<case>[\w.-]+): (?P<q>.+?) = (?P<val>\S+) \(reference (?
                   r"relative error (?P<err>[-\d.e+]+) %.*wall time (?P<wall>[\d.na]+) s", re.M)
 PUBLISHED = re.compile(r"^[\w.-]+: against the published (?P<pub>\S+): (?P<err>[-+\d.]+) %", re.M)
 TEST_TIME = re.compile(r"^Test time =\s*(?P<wall>[\d.]+) sec", re.M)
-MOMENTUM = re.compile(r"^momentum audit: .* = (?P<err>\S+) of the body momentum;.*wall time "
+MOMENTUM = re.compile(r"^momentum audit: .* = (?P<err>\S+) of the momentum scale;.*wall time "
                       r"(?P<wall>[\d.]+) s", re.M)
 INVARIANCE = re.compile(r"^invariance: ranks (?P<a>\S+) vs (?P<b>\S+): largest relative "
                         r"difference (?P<err>\S+)", re.M)
@@ -112,7 +112,8 @@ def rows_of(name, body):
         rows.append((ref, pct, f"{float(m['err']):.3g} %"))
     for m in MOMENTUM.finditer(body):
         rows.append(("momentum audit: fluid + bodies - applied impulse, relative to the "
-                     "body momentum", tol or "?", m["err"]))
+                     "momentum scale (the largest body momentum unless stated)", tol or "?",
+                     m["err"]))
     worst = [float(m["err"]) for m in INVARIANCE.finditer(body)]
     if worst:
         rows.append(("same trajectory on other rank counts (largest relative difference)",

@@ -1,5 +1,7 @@
 #include "coupler_lib/app/command_line.hpp"
 
+#include "coupler_lib/scene/choices.hpp"
+
 #include <stdexcept>
 
 namespace lbdem {
@@ -42,8 +44,7 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
     throw std::invalid_argument("--schema takes no scene and no other option");
   if (!c.replay.empty() && !c.restart.empty())
     throw std::invalid_argument("--replay and --restart cannot be combined");
-  if (!c.log_level.empty() && c.log_level != "trace" && c.log_level != "debug" &&
-      c.log_level != "info" && c.log_level != "warn" && c.log_level != "error")
+  if (!c.log_level.empty() && !find_word(kLogLevelWords, c.log_level))
     throw std::invalid_argument("--log-level expects trace, debug, info, warn or error");
   return c;
 }

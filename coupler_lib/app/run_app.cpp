@@ -160,8 +160,9 @@ int run_app(int argc, char** argv, const AppInfo& info,
   }
   // --json keeps stderr to warnings, so a tool reads stdout and shows stderr only on failure.
   const std::string level = !ctx.cli.log_level.empty() ? ctx.cli.log_level
-                            : ctx.cli.json             ? std::string("warn")
-                                                       : ctx.scene.log_level;
+                            : ctx.cli.json
+                                ? std::string("warn")
+                                : std::string(word_of(kLogLevelWords, ctx.scene.log_level));
   ctx.log = make_logger(info.side, ctx.rank, level);
 
   int rc = 0;

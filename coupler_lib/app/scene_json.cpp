@@ -160,7 +160,7 @@ void schedule_derived(Node& d, const Schedule& s, double end) {
 
 void shape_entry(Node& n, const ShapeParams& p, const Shape& sh) {
   n.member("name").set(json_string(p.name));
-  n.member("kind").set(json_string(p.kind));
+  n.member("kind").set(json_string(std::string(word_of(kShapeKindWords, p.kind))));
   n.member("size").set(json_number(p.size));
   n.member("volume").set(json_number(sh.mass.volume));
   n.member("equivalent_diameter")

@@ -169,7 +169,8 @@ void check_checkpoint_header(const std::string& path, const CheckpointHeader& fo
     refuse("written for another scene ('" + found.scene_file + "', fingerprint " +
            hex(found.fingerprint) + "; this scene '" + expected.scene_file + "' has " +
            hex(expected.fingerprint) +
-           "); only time.end, outputs, log and checkpoint keys may change at a restart");
+           "); only time.end, outputs, log, checkpoint and fluid layout keys may change at a "
+           "restart");
   if (same_ranks_needed && found.side == "dem" && found.dem_ranks != expected.dem_ranks)
     refuse("written by " + std::to_string(found.dem_ranks) + " dem_app ranks, this run has " +
            std::to_string(expected.dem_ranks) +
@@ -180,10 +181,22 @@ void check_checkpoint_header(const std::string& path, const CheckpointHeader& fo
 void prune_checkpoints(const Scene& scene, const std::string& side, int keep) {
   const auto all = prefixes_in(checkpoint_directory(scene), side);
   const std::string suffix = side == "fluid" ? kFluidSuffix : kDemSuffix;
+  std::vector<std::string> pruned;
   for (std::size_t i = 0; i + static_cast<std::size_t>(keep) < all.size(); ++i) {
     std::error_code ec;
     fs::remove(all[i] + suffix, ec);
+    pruned.push_back(all[i]);
   }
+  if (side != "dem" || pruned.empty()) return;
+  // The DEM half's journal parts, one per DEM rank: "<prefix>.dem.rank<k>.h5".
+  std::error_code ec;
+  std::vector<fs::path> parts;
+  for (const auto& e : fs::directory_iterator(checkpoint_directory(scene), ec)) {
+    const std::string p = e.path().string();
+    for (const std::string& prefix : pruned)
+      if (p.rfind(prefix + ".dem.rank", 0) == 0 && ends_with(p, ".h5")) parts.push_back(e.path());
+  }
+  for (const fs::path& p : parts) fs::remove(p, ec);
 }
 
 namespace {

@@ -67,8 +67,8 @@ void check_checkpoint_header(const std::string& path, const CheckpointHeader& fo
 void check_restart(const std::string& arg, const Scene& scene, const std::string& side,
                    int side_ranks);
 
-// Removes this side's halves beyond the newest `keep` in the scene's checkpoint folder
-// (called by one rank after a checkpoint is complete).
+// Removes this side's halves (the DEM's with their journal parts) beyond the newest `keep` in
+// the scene's checkpoint folder (called by one rank after a checkpoint is complete).
 void prune_checkpoints(const Scene& scene, const std::string& side, int keep);
 
 // The newest checkpoint this process completed or restarted from, for messages such as the

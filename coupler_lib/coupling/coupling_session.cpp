@@ -58,6 +58,9 @@ CouplingSession::CouplingSession(const SideInfo& side, const Scene& scene, const
   fluid_ranks_ = side.side == "fluid" ? side.size : peer;
   dem_ranks_ = side.side == "fluid" ? peer : side.size;
   if (!agrees_) return;
+  // Both programs know the schedule: the waits around the other's checkpoint and field writes
+  // get the pause allowance of the stall watch.
+  world_->stall().expect_pauses(pause_steps(scene, schedule));
   install_stop_handlers();
   if (side.rank == 0) std::filesystem::create_directories(checkpoint_directory(scene));
 }

@@ -26,13 +26,18 @@ DemCoupler::DemCoupler(const World& world, const Scene& scene, const std::string
     // The journal outlives edits of time.end and outputs: it is identified by the scene
     // fingerprint, which a restart checks, instead of the bytes of the file.
     info.scene_hash = scene_fingerprint(scene);
-    journal_ = std::make_unique<Recorder>(side_, journal, info);
-    journal_path_ = journal;
+    journal_ = std::make_unique<JournalWriter>(journal_part(journal, world.rank()), info);
   }
 }
 
 DemCoupler::DemCoupler(const SideInfo& ctx, const std::string& recording)
     : DemCoupler(ctx.side_comm, std::make_unique<ReplayDemTransport>(ctx, recording)) {}
+
+std::unique_ptr<DemCoupler> DemCoupler::replaying_journal(const SideInfo& ctx,
+                                                          const std::string& part) {
+  return std::unique_ptr<DemCoupler>(
+      new DemCoupler(ctx.side_comm, std::make_unique<JournalDemTransport>(ctx, part)));
+}
 
 DemCoupler::DemCoupler(MPI_Comm side, std::unique_ptr<DemTransport> transport)
     : transport_(std::move(transport)), side_(side) {
@@ -106,7 +111,7 @@ void DemCoupler::journal_loads(std::int64_t step, std::span<const BodyLoad> load
 std::string DemCoupler::flush_journal() {
   if (!journal_) return {};
   journal_->flush();
-  return journal_path_;
+  return journal_->path();
 }
 
 CouplingTimes DemCoupler::times() const {

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "coupler_lib/coupling/coupling_times.hpp"
+#include "coupler_lib/coupling/journal.hpp"
 #include "coupler_lib/coupling/packets.hpp"
 #include "coupler_lib/coupling/recorder.hpp"
 #include "coupler_lib/coupling/routing.hpp"
@@ -32,11 +33,15 @@ namespace lbdem {
 class DemCoupler {
  public:
   // Live. Collective over both programs (the fluid side constructs its FluidCoupler).
-  // `journal`: a recording of every exchange kept for checkpoints (the DEM half of a
-  // checkpoint is this journal up to its step, docs/reliability.md); empty: none.
+  // `journal`: the path of the journal of every exchange kept for checkpoints, of which this
+  // rank writes its part (journal.hpp; the DEM half of a checkpoint holds the parts up to its
+  // step, docs/reliability.md); empty: none.
   DemCoupler(const World& world, const Scene& scene, const std::string& journal = {});
   // Replay from a recording. Collective over the DEM ranks.
   DemCoupler(const SideInfo& ctx, const std::string& recording);
+  // A restart's replay of this rank's part of a checkpoint's journal (no communication).
+  static std::unique_ptr<DemCoupler> replaying_journal(const SideInfo& ctx,
+                                                       const std::string& part);
   ~DemCoupler();
 
   // Collective over both programs (live) or over the DEM ranks (replay).
@@ -46,10 +51,10 @@ class DemCoupler {
   std::vector<BodyLoad> receive_loads(std::int64_t step);
 
   // Journal entries for exchanges that did not go through this coupler (a restart replays
-  // its checkpoint's steps before the live exchanges resume). Collective over the DEM ranks.
+  // its checkpoint's steps before the live exchanges resume). This rank's part only.
   void journal_states(std::int64_t step, std::span<const BodyState> owned);
   void journal_loads(std::int64_t step, std::span<const BodyLoad> loads);
-  // Writes the journal to disk and returns its path (collective; empty without a journal).
+  // Writes this rank's part of the journal to disk and returns its path (empty without one).
   std::string flush_journal();
 
   // The decomposition the fluid side announced (or the recorded one in a replay).
@@ -63,8 +68,7 @@ class DemCoupler {
   std::unique_ptr<DemTransport> transport_;
   CouplingTimes times_;
   std::unique_ptr<Recorder> recorder_;
-  std::unique_ptr<Recorder> journal_;
-  std::string journal_path_;
+  std::unique_ptr<JournalWriter> journal_;
   MPI_Comm side_;
   FluidLayout layout_;
   std::int64_t step_ = -1;       // step of the last send_states

@@ -6,11 +6,11 @@ namespace lbdem {
 
 namespace {
 
-// One exchange whose waits for the other program run under the stall watch of `stall`.
+// One exchange whose waits for the other program run under the world's stall watch.
 template <class T>
-std::vector<std::vector<T>> watched(const World& world, StallWatch& stall, WaitMode mode,
-                                    double& waited, std::int64_t step,
-                                    const std::vector<std::vector<T>>& send) {
+std::vector<std::vector<T>> watched(const World& world, WaitMode mode, double& waited,
+                                    std::int64_t step, const std::vector<std::vector<T>>& send) {
+  StallWatch& stall = world.stall();
   stall.begin(step);
   auto received = exchange(world.inter(), send,
                            ExchangeWait(
@@ -31,8 +31,7 @@ LiveFluidTransport::LiveFluidTransport(const World& world)
       inter_(world.inter()),
       rank_(world.rank()),
       dem_ranks_(world.peer().size),
-      wait_(world.wait()),
-      stall_(world.stall_timeout(), world.peer()) {}
+      wait_(world.wait()) {}
 
 void LiveFluidTransport::announce(const FluidLayout& layout) {
   // Fluid rank 0 broadcasts to every DEM rank (intercommunicator broadcast: the sending
@@ -48,21 +47,17 @@ void LiveFluidTransport::announce(const FluidLayout& layout) {
 }
 
 std::vector<std::vector<BodyState>> LiveFluidTransport::receive_states(std::int64_t step) {
-  return watched(*world_, stall_, wait_, waited_, step,
+  return watched(*world_, wait_, waited_, step,
                  std::vector<std::vector<BodyState>>(static_cast<size_t>(dem_ranks_)));
 }
 
 void LiveFluidTransport::send_loads(std::int64_t step,
                                     const std::vector<std::vector<BodyLoad>>& per_dem_rank) {
-  watched(*world_, stall_, wait_, waited_, step, per_dem_rank);
+  watched(*world_, wait_, waited_, step, per_dem_rank);
 }
 
 LiveDemTransport::LiveDemTransport(const World& world)
-    : world_(&world),
-      inter_(world.inter()),
-      fluid_ranks_(world.peer().size),
-      wait_(world.wait()),
-      stall_(world.stall_timeout(), world.peer()) {}
+    : world_(&world), inter_(world.inter()), fluid_ranks_(world.peer().size), wait_(world.wait()) {}
 
 FluidLayout LiveDemTransport::receive_layout() {
   unsigned long long n = 0;
@@ -77,11 +72,11 @@ FluidLayout LiveDemTransport::receive_layout() {
 
 void LiveDemTransport::send_states(std::int64_t step, std::span<const BodyState>,
                                    const std::vector<std::vector<BodyState>>& per_fluid_rank) {
-  watched(*world_, stall_, wait_, waited_, step, per_fluid_rank);
+  watched(*world_, wait_, waited_, step, per_fluid_rank);
 }
 
 std::vector<std::vector<BodyLoad>> LiveDemTransport::receive_loads(std::int64_t step) {
-  return watched(*world_, stall_, wait_, waited_, step,
+  return watched(*world_, wait_, waited_, step,
                  std::vector<std::vector<BodyLoad>>(static_cast<size_t>(fluid_ranks_)));
 }
 

@@ -2,13 +2,9 @@
 
 #include <mpi.h>
 
-#include <chrono>
 #include <csignal>
-#include <sstream>
 
-#include "coupler_lib/coupling/checkpoint_files.hpp"
 #include "coupler_lib/coupling/stall_watch.hpp"
-#include "coupler_lib/errors.hpp"
 
 namespace lbdem {
 
@@ -41,22 +37,15 @@ int agree_flags(int mine, const World& world, std::int64_t step) {
   int all = 0;
   MPI_Request req = MPI_REQUEST_NULL;
   MPI_Iallreduce(&mine, &all, 1, MPI_INT, MPI_BOR, MPI_COMM_WORLD, &req);
-  const double limit =
-      world.stall_timeout() > 0 ? world.stall_timeout() : StallWatch::kAutomaticFloor;
-  const auto start = std::chrono::steady_clock::now();
+  // The same watch as the exchanges: the other program may be running its stability check
+  // (a pass over the lattice) or writing a checkpoint before it joins.
+  StallWatch& stall = world.stall();
+  stall.begin(step, StallWatch::Wait::agreement);
   wait_request(req, world.wait(), [&] {
     world.check_peer();
-    const double waited =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (waited <= limit) return;
-    std::ostringstream m;
-    m << world.peer().program << " (the " << world.peer().side << " side) has not joined the "
-      << "agreement after exchange step " << step << " for " << waited << " s (limit " << limit
-      << " s, coupling.stall_timeout): one of its ranks is stopped, hung or deadlocked; last "
-      << "checkpoint: "
-      << (remembered_checkpoint().empty() ? std::string("none") : remembered_checkpoint());
-    throw SideError(m.str());
+    stall.check();
   });
+  stall.end();
   return all;
 }
 

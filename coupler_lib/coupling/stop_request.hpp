@@ -33,10 +33,10 @@ enum ExchangeFlag : int {
 bool agreement_at(const Scene& scene, const Schedule& schedule, std::int64_t step);
 
 // Collective over MPI_COMM_WORLD: the bitwise or of `mine` over every rank of both programs,
-// after exchange `step`. Waits like the exchanges do; throws SideError when the other program
-// said goodbye (World::check_peer) or does not arrive within coupling.stall_timeout (600 s when
-// automatic), naming the step, so a rank stopped between an exchange and this reduction ends
-// the job as the stall watchdog would.
+// after exchange `step`. Waits like the exchanges do, under the same stall watch (World::stall,
+// its limit scaled by the measured step time): throws SideError when the other program said
+// goodbye (World::check_peer) or does not arrive within that limit, naming the step, so a rank
+// stopped between an exchange and this reduction ends the job as the stall watchdog would.
 int agree_flags(int mine, const World& world, std::int64_t step);
 
 // The same as a barrier over both programs (e.g. both halves of a checkpoint are written).

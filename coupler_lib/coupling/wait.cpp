@@ -28,12 +28,6 @@ bool test_with_backoff(MPI_Request& request, std::chrono::steady_clock::time_poi
 
 }  // namespace
 
-WaitMode wait_mode_from(const std::string& word) {
-  if (word == "backoff") return WaitMode::backoff;
-  if (word == "blocking") return WaitMode::blocking;
-  throw std::invalid_argument("wait mode must be 'backoff' or 'blocking', got '" + word + "'");
-}
-
 void wait_request(MPI_Request& request, WaitMode mode, const std::function<void()>& between_tests) {
   if (mode == WaitMode::blocking) {
     if (!between_tests) {

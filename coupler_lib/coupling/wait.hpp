@@ -13,11 +13,9 @@
 #include <functional>
 #include <string>
 
+#include "coupler_lib/scene/choices.hpp"
+
 namespace lbdem {
-
-enum class WaitMode { backoff, blocking };
-
-WaitMode wait_mode_from(const std::string& word);  // "backoff" | "blocking"
 
 // Completes `request` (it becomes MPI_REQUEST_NULL). `between_tests`, if given, runs between
 // two tests and may throw to give up (World::check_peer); blocking mode then spins on

@@ -98,7 +98,8 @@ World::World(MPI_Comm side, MPI_Comm inter, PeerInfo peer, WaitMode wait, double
       inter_(inter),
       stall_timeout_(stall_timeout),
       peer_(std::move(peer)),
-      wait_(wait) {
+      wait_(wait),
+      stall_(stall_timeout, peer_) {
   MPI_Comm_rank(side_, &rank_);
   MPI_Comm_size(side_, &size_);
   MPI_Comm_dup(inter_, &control_);
@@ -124,6 +125,7 @@ World& World::operator=(World&& o) noexcept {
     peer_ = std::move(o.peer_);
     wait_ = o.wait_;
     stall_timeout_ = o.stall_timeout_;
+    stall_ = std::move(o.stall_);
   }
   return *this;
 }
@@ -204,8 +206,7 @@ World connect(const SideInfo& ctx, const ConnectOptions& options) {
     MPI_Comm_free(&inter);
     throw JobError(problem);
   }
-  return World(ctx.side_comm, inter, peer_of(peer), wait_mode_from(ctx.coupling.wait),
-               ctx.coupling.stall_timeout);
+  return World(ctx.side_comm, inter, peer_of(peer), ctx.coupling.wait, ctx.coupling.stall_timeout);
 }
 
 }  // namespace lbdem

@@ -25,6 +25,7 @@
 
 #include "coupler_lib/coupling/packets.hpp"
 #include "coupler_lib/coupling/side_info.hpp"
+#include "coupler_lib/coupling/stall_watch.hpp"
 #include "coupler_lib/coupling/wait.hpp"
 #include "coupler_lib/errors.hpp"
 
@@ -64,6 +65,9 @@ class World {
   const PeerInfo& peer() const { return peer_; }
   WaitMode wait() const { return wait_; }
   double stall_timeout() const { return stall_timeout_; }  // coupling.stall_timeout
+  // The program's one stall watch: the exchanges and the agreements time their waits on it
+  // (bookkeeping of waits, hence usable through a const World).
+  StallWatch& stall() const { return stall_; }
 
   // Called while waiting for packets: throws SideError when the other program said goodbye
   // more than a grace period ago (it finished; what this program waits for will not come).
@@ -82,6 +86,7 @@ class World {
   double stall_timeout_ = 0;
   PeerInfo peer_;
   WaitMode wait_ = WaitMode::backoff;
+  mutable StallWatch stall_;
 };
 
 // Collective over MPI_COMM_WORLD. Throws JobError when the handshake finds a mismatch,

@@ -60,7 +60,7 @@ ShapeParams scaled_params(const ShapeParams& p, double factor) {
 ShapeParams offset_params(const ShapeParams& p, double offset) {
   if (offset == 0) return p;
   ShapeParams q = p;
-  if (p.kind == "stl") {
+  if (p.kind == ShapeKind::stl) {
     const SolidGeometry solid = make_solid(p);
     const double s =
         1 - offset * surface_area(solid.triangles()) / (3 * std::abs(solid.exact_volume()));
@@ -69,7 +69,7 @@ ShapeParams offset_params(const ShapeParams& p, double offset) {
   }
   // size is a diameter or an edge (2 x the largest semi-axis for an ellipsoid); extents are
   // edges (cube, cuboid) or semi-axes (sphere, ellipsoid).
-  const bool semi_axes = p.kind == "sphere" || p.kind == "ellipsoid";
+  const bool semi_axes = extents_are_semi_axes(p.kind);
   q.size -= 2 * offset;
   for (double& e : q.extents) e -= semi_axes ? offset : 2 * offset;
   if (!(*std::min_element(q.extents.begin(), q.extents.end()) > 0))
@@ -79,17 +79,23 @@ ShapeParams offset_params(const ShapeParams& p, double offset) {
 
 SolidGeometry make_solid(const ShapeParams& p) {
   const Eigen::Vector3d ext(p.extents[0], p.extents[1], p.extents[2]);
-  if (p.kind == "sphere") return SolidGeometry::sphere(p.size / 2);
-  if (p.kind == "cube") return SolidGeometry::cuboid(Eigen::Vector3d::Constant(p.size));
-  if (p.kind == "cuboid") return SolidGeometry::cuboid(ext);
-  if (p.kind == "ellipsoid") return SolidGeometry::ellipsoid(ext);
-  if (p.kind == "stl") {
-    TriangleMesh mesh = read_stl(p.file);
-    check_closed_oriented(mesh, p.file);
-    scale_mesh(mesh, p.scale);
-    return SolidGeometry::mesh(std::move(mesh));
+  switch (p.kind) {
+    case ShapeKind::sphere:
+      return SolidGeometry::sphere(p.size / 2);
+    case ShapeKind::cube:
+      return SolidGeometry::cuboid(Eigen::Vector3d::Constant(p.size));
+    case ShapeKind::cuboid:
+      return SolidGeometry::cuboid(ext);
+    case ShapeKind::ellipsoid:
+      return SolidGeometry::ellipsoid(ext);
+    case ShapeKind::stl: {
+      TriangleMesh mesh = read_stl(p.file);
+      check_closed_oriented(mesh, p.file);
+      scale_mesh(mesh, p.scale);
+      return SolidGeometry::mesh(std::move(mesh));
+    }
   }
-  throw ShapeError(p.where + ": unknown shape kind '" + p.kind + "'");
+  throw std::logic_error("make_solid: shape kind out of range");
 }
 
 Shape build_shape(const ShapeParams& p, double h) {
@@ -118,15 +124,15 @@ Shape build_shape(const ShapeParams& p, double h) {
   Clump clump;  // input frame
   const auto& cp = p.clump;
   try {
-    if (cp.source == "file") {
+    if (cp.source == ClumpSource::file) {
       clump = translated(read_clump(cp.file, cp.scale), -c);
       shape.clump_source = "file " + cp.file;
-    } else if (cp.source == "surface") {
+    } else if (cp.source == ClumpSource::surface) {
       clump = surface_clump(solid, vox, {cp.grid, cp.radius_ratio, cp.center_sphere});
       shape.clump_source = "surface grid=" + std::to_string(cp.grid) +
                            " radius_ratio=" + std::to_string(cp.radius_ratio);
-    } else if (cp.source == "fill" || p.kind != "sphere") {
-      const int n = cp.source == "fill" ? cp.spheres : kDefaultFillSpheres;
+    } else if (cp.source == ClumpSource::fill || p.kind != ShapeKind::sphere) {
+      const int n = cp.source == ClumpSource::fill ? cp.spheres : kDefaultFillSpheres;
       clump = fill_clump(solid, vox, {n});
       shape.clump_source = "fill spheres=" + std::to_string(n);
     } else {
@@ -140,7 +146,7 @@ Shape build_shape(const ShapeParams& p, double h) {
   shape.clump_quality = clump_quality(clump, vox);
   const double reach = clump_reach(clump, c);
   const bool too_big = reach > 1.1 * shape.bounding_radius + 2 * h;
-  if (cp.source == "file" &&
+  if (cp.source == ClumpSource::file &&
       (too_big || shape.clump_quality.volume_error > kMaxFileClumpVolumeError)) {
     std::ostringstream s;
     s << p.where << ": shape '" << p.name << "': clump file " << cp.file

@@ -13,17 +13,21 @@ TriangleMesh display_surface(const ShapeParams& params, const Eigen::Vector3d& c
   constexpr int kLevels = 2;
   const Eigen::Vector3d e(params.extents[0], params.extents[1], params.extents[2]);
   TriangleMesh m;
-  if (params.kind == "sphere") {
-    m = icosphere_mesh(e.x(), kLevels);
-  } else if (params.kind == "ellipsoid") {
-    m = icosphere_mesh(1.0, kLevels);
-    for (auto& v : m.vertices) v = v.cwiseProduct(e);
-  } else if (params.kind == "cube" || params.kind == "cuboid") {
-    m = box_mesh(e);
-  } else if (params.kind == "stl") {
-    m = make_solid(params).triangles();
-  } else {
-    throw std::logic_error("display_surface: unknown shape kind " + params.kind);
+  switch (params.kind) {
+    case ShapeKind::sphere:
+      m = icosphere_mesh(e.x(), kLevels);
+      break;
+    case ShapeKind::ellipsoid:
+      m = icosphere_mesh(1.0, kLevels);
+      for (auto& v : m.vertices) v = v.cwiseProduct(e);
+      break;
+    case ShapeKind::cube:
+    case ShapeKind::cuboid:
+      m = box_mesh(e);
+      break;
+    case ShapeKind::stl:
+      m = make_solid(params).triangles();
+      break;
   }
   for (auto& v : m.vertices) v -= centroid;
   return m;

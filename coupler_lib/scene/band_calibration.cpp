@@ -68,10 +68,9 @@ std::optional<double> interpolate(const std::array<Point, N>& table, double tau)
 
 }  // namespace
 
-std::optional<double> band_radius_excess_cells(double tau, const std::string& lookup) {
-  if (lookup == "nearest") return interpolate(kNearest, tau);
-  if (lookup == "trilinear") return interpolate(kTrilinear, tau);
-  return std::nullopt;
+std::optional<double> band_radius_excess_cells(double tau, PorosityLookup lookup) {
+  return lookup == PorosityLookup::nearest ? interpolate(kNearest, tau)
+                                           : interpolate(kTrilinear, tau);
 }
 
 std::string band_calibration_range() {

@@ -11,12 +11,14 @@
 #include <optional>
 #include <string>
 
+#include "coupler_lib/scene/choices.hpp"
+
 namespace lbdem {
 
 // Excess of the band's hydrodynamic radius over the body's, in lattice cells, at this tau for
-// the lookup ("nearest" or "trilinear"); interpolated linearly in ln(tau - 1/2) between the
+// the lookup; interpolated linearly in ln(tau - 1/2) between the
 // measured relaxation times. nullopt outside the measured range.
-std::optional<double> band_radius_excess_cells(double tau, const std::string& lookup);
+std::optional<double> band_radius_excess_cells(double tau, PorosityLookup lookup);
 
 // "[0.505, 3]": the measured range of tau, for messages.
 std::string band_calibration_range();

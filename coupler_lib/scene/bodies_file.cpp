@@ -85,7 +85,7 @@ BodyParams checked_body(const FileBody& raw, const BodiesFileEntry& e,
 std::vector<KeySchema> bodies_file_keys() {
   return {key::text("file", "bodies file, CSV or HDF5 (docs/study.md), relative to the scene")
               .required(),
-          key::choice("format", {"csv", "hdf5"},
+          key::choice("format", words_of(kBodiesFormatWords),
                       "format of the bodies file (default: hdf5 for .h5 and .hdf5, else csv)")
               .derived_as("hdf5 for a file ending in .h5 or .hdf5, else csv"),
           key::text("shape", "shape of every body of the file")
@@ -101,8 +101,8 @@ std::vector<BodyParams> read_bodies_file(Section& entry, const std::vector<Shape
   std::filesystem::path path(name);
   if (path.is_relative()) path = std::filesystem::path(entry.file()).parent_path() / path;
   const std::string ext = path.extension().string();
-  const std::string format =
-      entry.choice("format", ext == ".h5" || ext == ".hdf5" ? "hdf5" : "csv");
+  const BodiesFormat format = value_of(
+      kBodiesFormatWords, entry.choice("format", ext == ".h5" || ext == ".hdf5" ? "hdf5" : "csv"));
   if (!std::ifstream(path)) entry.fail("file", "cannot open '" + path.string() + "'");
 
   BodiesFileEntry e;
@@ -116,7 +116,7 @@ std::vector<BodyParams> read_bodies_file(Section& entry, const std::vector<Shape
   if (entry.has("density")) e.density = entry.require<double>("density");
   entry.finish();
   e.where = entry.where("file");
-  return format == "hdf5" ? read_bodies_hdf5(e, shapes) : read_bodies_csv(e, shapes);
+  return format == BodiesFormat::hdf5 ? read_bodies_hdf5(e, shapes) : read_bodies_csv(e, shapes);
 }
 
 }  // namespace lbdem

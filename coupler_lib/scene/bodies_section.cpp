@@ -10,16 +10,22 @@ namespace lbdem {
 
 std::optional<ShapeExtent> analytic_extent(const ShapeParams& shape) {
   const double a = shape.size;
-  if (shape.kind == "sphere") return ShapeExtent{0.5 * a, std::numbers::pi * a * a * a / 6.0};
-  if (shape.kind == "cube") return ShapeExtent{0.5 * std::sqrt(3.0) * a, a * a * a};
   const auto& e = shape.extents;
-  if (shape.kind == "cuboid")
-    return ShapeExtent{0.5 * std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]),
-                       e[0] * e[1] * e[2]};
-  if (shape.kind == "ellipsoid")
-    return ShapeExtent{std::max({e[0], e[1], e[2]}),
-                       4.0 / 3.0 * std::numbers::pi * e[0] * e[1] * e[2]};
-  return std::nullopt;  // stl: known only once the mesh is read
+  switch (shape.kind) {
+    case ShapeKind::sphere:
+      return ShapeExtent{0.5 * a, std::numbers::pi * a * a * a / 6.0};
+    case ShapeKind::cube:
+      return ShapeExtent{0.5 * std::sqrt(3.0) * a, a * a * a};
+    case ShapeKind::cuboid:
+      return ShapeExtent{0.5 * std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]),
+                         e[0] * e[1] * e[2]};
+    case ShapeKind::ellipsoid:
+      return ShapeExtent{std::max({e[0], e[1], e[2]}),
+                         4.0 / 3.0 * std::numbers::pi * e[0] * e[1] * e[2]};
+    case ShapeKind::stl:
+      return std::nullopt;  // known only once the mesh is read
+  }
+  return std::nullopt;
 }
 
 namespace {
@@ -74,7 +80,7 @@ BodyParams parse_body(Section& s, const std::vector<ShapeParams>& shapes) {
 
 BodyGenerator parse_generator(Section& s, const std::vector<ShapeParams>& shapes) {
   BodyGenerator g;
-  g.pattern = s.require_choice("generate");
+  g.pattern = value_of(kBodyPatternWords, s.require_choice("generate"));
   g.shape = find_shape(s, shapes);
   const auto extent = analytic_extent(shapes[static_cast<size_t>(g.shape)]);
   g.density = s.require<double>("density");
@@ -126,7 +132,7 @@ std::vector<BodyParams> generate_bodies(const BodyGenerator& g, const Section& w
   }
   std::vector<std::array<double, 3>> centres;
   SplitMix64 rng{g.seed};
-  if (g.pattern == "lattice") {
+  if (g.pattern == BodyPattern::lattice) {
     // The densest simple cubic lattice with spacing >= min_distance that fits, filled x fastest
     // then y then z, so a partial last layer sits on top.
     std::array<long, 3> n{};
@@ -228,7 +234,7 @@ const MappingSchema& body_schema() {
       {},
       {{"generate",
         "",
-        {key::choice("generate", {"lattice", "random"},
+        {key::choice("generate", words_of(kBodyPatternWords),
                      "lattice: simple cubic, filled from the lower corner; random: random "
                      "sequential addition")
              .required(),

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "coupler_lib/scene/choices.hpp"
 #include "coupler_lib/scene/shapes_section.hpp"
 #include "coupler_lib/scene/yaml_reader.hpp"
 
@@ -34,7 +35,7 @@ std::optional<ShapeExtent> analytic_extent(const ShapeParams& shape);
 
 // What a generator entry asks for.
 struct BodyGenerator {
-  std::string pattern;  // lattice | random
+  BodyPattern pattern = BodyPattern::lattice;
   int shape = 0;
   double density = 0;
   std::array<double, 3> lo{}, hi{};  // region the bodies lie in entirely

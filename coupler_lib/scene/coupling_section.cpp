@@ -43,7 +43,7 @@ const MappingSchema& coupling_schema() {
            .or_default(0.0)
            .within(Bounds::non_negative())
            .in("s"),
-       key::choice("wait", {"backoff", "blocking"},
+       key::choice("wait", words_of(kWaitModeWords),
                    "how a side waits for the other: backoff sleeps, blocking spins a core")
            .or_default("backoff"),
        key::boolean("overlap",
@@ -67,7 +67,7 @@ CouplingParams parse_coupling(Section& s) {
   p.checkpoint_keep = s.get<int>("checkpoint_keep");
   p.handshake_timeout = s.get<double>("handshake_timeout");
   p.stall_timeout = s.get<double>("stall_timeout");
-  p.wait = s.choice("wait");
+  p.wait = value_of(kWaitModeWords, s.choice("wait"));
   p.overlap = s.get<bool>("overlap");
   s.finish();
   return p;

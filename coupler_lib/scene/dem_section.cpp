@@ -11,10 +11,6 @@ const char* axis_name(int axis) {
 
 namespace {
 
-int axis_index(const std::string& a) {
-  return a == "x" ? 0 : a == "y" ? 1 : 2;
-}
-
 const MappingSchema& material_schema() {
   static const DemMaterial d;
   static const MappingSchema m{
@@ -73,8 +69,9 @@ const MappingSchema& wall_schema() {
   static const MappingSchema m{
       "dem.walls[]",
       "a plane wall (LAMMPS fix wall/gran)",
-      {key::choice("axis", {"x", "y", "z"}, "wall normal axis").required(),
-       key::choice("side", {"lo", "hi"}, "lo: bodies lie above the wall, hi: below").required(),
+      {key::choice("axis", words_of(kAxisWords), "wall normal axis").required(),
+       key::choice("side", words_of(kLowerSideWords), "lo: bodies lie above the wall, hi: below")
+           .required(),
        key::number("position", "wall coordinate in m (default: the box face)")
            .derived_as("the box face")
            .in("m")}};
@@ -148,7 +145,7 @@ const MappingSchema& dem_schema() {
                    "paper: 0.05)")
            .or_default(0.05)
            .within({0.0, 1.0, true, false}),
-       key::choice("dt_rule", {"clump_sphere", "particle"},
+       key::choice("dt_rule", words_of(kDtRuleWords),
                    "radius of the Rayleigh time for dt_fraction: clump_sphere (the smallest clump "
                    "sphere) or particle (the body's volume-equivalent sphere, the paper's rule: "
                    "larger steps, contacts resolved by fewer of them)")
@@ -185,7 +182,7 @@ DemParams parse_dem(Section& s) {
   p.buoyancy_fluid_density = s.get<double>("buoyancy_fluid_density");
   p.dt = s.get<double>("dt");
   p.dt_fraction = s.get<double>("dt_fraction");
-  p.dt_rule = s.choice("dt_rule");
+  p.dt_rule = value_of(kDtRuleWords, s.choice("dt_rule"));
   {
     auto m = s.section_or_defaults("material");
     p.material = parse_material(m);
@@ -204,12 +201,12 @@ DemParams parse_dem(Section& s) {
   for (char c : periodic) {
     if (c != 'x' && c != 'y' && c != 'z')
       s.fail("periodic", "expected only the letters x, y and z, got '" + periodic + "'");
-    p.periodic[axis_index(std::string(1, c))] = true;
+    p.periodic[value_of(kAxisWords, std::string(1, c))] = true;
   }
   for (auto& w : s.list("walls")) {
     DemWall wall;
-    wall.axis = axis_index(w.require_choice("axis"));
-    wall.lower = w.require_choice("side") == "lo";
+    wall.axis = value_of(kAxisWords, w.require_choice("axis"));
+    wall.lower = value_of(kLowerSideWords, w.require_choice("side"));
     if (w.has("position")) wall.position = w.require<double>("position");
     w.finish();
     p.walls.push_back(wall);

@@ -52,7 +52,7 @@ struct DemParams {
   double dt_fraction = 0.05;                   // of the Rayleigh time (paper: 0.05 t_c)
   // Whose Rayleigh time: "clump_sphere" (the smallest clump sphere) or "particle" (the
   // volume-equivalent sphere of the body, the paper's rule).
-  std::string dt_rule = "clump_sphere";
+  DtRule dt_rule = DtRule::clump_sphere;
   DemMaterial material;
   bool has_box = false;  // false: the box is [0, fluid.domain]
   std::array<double, 3> box_lo{0, 0, 0};

@@ -18,7 +18,7 @@ double smallest_sphere_radius(const Shape& shape) {
 }
 
 double time_step_radius(const Shape& shape, const DemParams& params) {
-  if (params.dt_rule == "particle")
+  if (params.dt_rule == DtRule::particle)
     return std::cbrt(3.0 * shape.mass.volume / (4.0 * std::numbers::pi));
   return smallest_sphere_radius(shape);
 }

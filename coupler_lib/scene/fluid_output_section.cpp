@@ -9,22 +9,12 @@ namespace lbdem {
 
 namespace {
 
-constexpr const char* kAxisNames[3] = {"x", "y", "z"};
-
-int axis_index(const std::string& a) {
-  return a == "x" ? 0 : a == "y" ? 1 : 2;
-}
-
-// Steps between two events `interval` seconds apart; at least one step.
-long steps_for(double interval, const UnitConverter& units) {
-  return std::max(1L, std::lround(interval / units.dt));
-}
 
 const MappingSchema& slice_schema() {
   static const MappingSchema m{
       "fluid.output.fields.slices[]",
       "a plane of nodes to write",
-      {key::choice("axis", {"x", "y", "z"}, "normal of the plane").required(),
+      {key::choice("axis", words_of(kAxisWords), "normal of the plane").required(),
        key::number("position", "coordinate of the plane along its normal in m")
            .required()
            .within(Bounds::non_negative())
@@ -47,7 +37,8 @@ const MappingSchema& fields_schema() {
        key::integer("stride", "write every stride-th node along each axis")
            .or_default(1)
            .within(Bounds::at_least(1)),
-       key::choice("precision", {"float", "double"}, "number type in the file").or_default("float"),
+       key::choice("precision", words_of(kFilePrecisionWords), "number type in the file")
+           .or_default("float"),
        key::list("slices", slice_schema(),
                  "planes of nodes to write, e.g. [{axis: z, position: 0.01}]")
            .absent_means("no slices"),
@@ -70,19 +61,19 @@ FieldOutputParams parse_fields(Section& f, const UnitConverter& units,
                                const std::array<int, 3>& cells) {
   FieldOutputParams p;
   p.interval = f.require<double>("interval");
-  p.every = steps_for(p.interval, units);
+  p.every = steps_between(p.interval, units.dt);
   p.velocity = f.get<bool>("velocity");
   p.density = f.get<bool>("density");
   p.pressure = f.get<bool>("pressure");
   if (!p.velocity && !p.density && !p.pressure)
     f.fail("", "asks for no quantity: set at least one of velocity, density, pressure to true");
   p.stride = f.get<int>("stride");
-  p.double_precision = f.choice("precision") == "double";
+  p.double_precision = value_of(kFilePrecisionWords, f.choice("precision")) == Precision::float64;
   auto slices = f.list("slices");
   p.volume = f.get<bool>("volume", slices.empty());
   for (auto& s : slices) {
     FieldSlice sl;
-    sl.axis = axis_index(s.require_choice("axis"));
+    sl.axis = value_of(kAxisWords, s.require_choice("axis"));
     const double extent = cells[sl.axis] * units.dx;
     // The schema bounds the plane below; the domain bounds it above.
     // The schema bounds the plane below; the domain bounds it above.
@@ -90,7 +81,7 @@ FieldOutputParams parse_fields(Section& f, const UnitConverter& units,
     // Nodes sit at cell centres (i + 1/2) dx: take the nearest one.
     sl.index =
         std::clamp(static_cast<int>(std::floor(sl.position / units.dx)), 0, cells[sl.axis] - 1);
-    sl.name = std::string("slice_") + kAxisNames[sl.axis] + std::to_string(sl.index);
+    sl.name = std::string("slice_") + std::string(word_of(kAxisWords, sl.axis)) + std::to_string(sl.index);
     s.finish();
     p.slices.push_back(sl);
   }
@@ -123,7 +114,7 @@ const MappingSchema& validation_schema() {
   static const MappingSchema m{
       "fluid.validation",
       "compare with an analytic solution",
-      {key::choice("case", {"poiseuille", "couette", "taylor_green"},
+      {key::choice("case", words_of(kValidationCaseWords),
                    "analytic solution the final state is compared with")
            .required(),
        key::number("tolerance",
@@ -136,7 +127,7 @@ const MappingSchema& validation_schema() {
              .required()
              .within(Bounds::positive())
              .in("m/s"),
-         key::choice("plane", {"xy", "yz", "zx"}, "the two axes the vortices turn in")
+         key::choice("plane", words_of(kPlaneWords), "the two axes the vortices turn in")
              .or_default("xy")},
         {}}}};
   return m;
@@ -176,15 +167,10 @@ StabilityParams parse_stability(Section& s) {
 ValidationParams parse_validation(Section& v) {
   ValidationParams p;
   p.name = v.require_choice("case");
-  p.kind = p.name == "poiseuille" ? ValidationCase::poiseuille
-           : p.name == "couette"  ? ValidationCase::couette
-                                  : ValidationCase::taylor_green;
+  p.kind = value_of(kValidationCaseWords, p.name);
   if (p.kind == ValidationCase::taylor_green) {
     p.amplitude = v.require<double>("amplitude");
-    const std::string plane = v.choice("plane");
-    p.plane = plane == "xy"   ? std::array<int, 2>{0, 1}
-              : plane == "yz" ? std::array<int, 2>{1, 2}
-                              : std::array<int, 2>{2, 0};
+    p.plane = value_of(kPlaneWords, v.choice("plane"));
   }
   p.tolerance = v.get<double>("tolerance");
   v.finish();
@@ -207,7 +193,7 @@ FluidOutputParams parse_fluid_output(Section& fluid, const UnitConverter& units,
     if (auto s = o->optional_section("series")) {
       SeriesOutputParams sp;
       sp.interval = s->require<double>("interval");
-      sp.every = steps_for(sp.interval, units);
+      sp.every = steps_between(sp.interval, units.dt);
       s->finish();
       p.series = sp;
     }

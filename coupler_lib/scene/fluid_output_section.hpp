@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "coupler_lib/scene/choices.hpp"
 #include "coupler_lib/scene/units.hpp"
 #include "coupler_lib/scene/yaml_reader.hpp"
 
@@ -47,8 +48,6 @@ struct StabilityParams {
   double max_mach = 0.3;  // |u| / c_s above which the run stops
   std::string last_good;  // file of the last good state; empty: "<scene name>_last_good.h5"
 };
-
-enum class ValidationCase { poiseuille, couette, taylor_green };
 
 struct ValidationParams {
   ValidationCase kind = ValidationCase::poiseuille;

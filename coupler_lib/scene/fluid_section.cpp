@@ -11,20 +11,12 @@ namespace {
 
 constexpr const char* kFaceNames[6] = {"x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
 
-FaceType face_type_from(const std::string& w) {
-  if (w == "wall") return FaceType::wall;
-  if (w == "moving_wall") return FaceType::moving_wall;
-  if (w == "pressure") return FaceType::pressure;
-  return FaceType::periodic;
-}
-
 // A face written as a mapping: its type, and the velocity or pressure that type needs.
 const MappingSchema& face_schema() {
   static const MappingSchema m{
       "fluid.boundaries.<face>",
       "one face of the box written as a mapping, e.g. {type: moving_wall, velocity: [u, v, w]}",
-      {key::choice("type", {"periodic", "wall", "moving_wall", "pressure"}, "boundary type")
-           .required()},
+      {key::choice("type", words_of(kFaceTypeWords), "boundary type").required()},
       {{"type",
         "moving_wall",
         {key::vec3("velocity", "wall velocity in m/s (tangential)").required().in("m/s")},
@@ -93,7 +85,7 @@ FaceBoundary parse_face(Section& b, int face) {
     b.fail(key, "a moving wall needs its velocity: write {type: moving_wall, velocity: [u, v, w]}");
   if (b.has(key) && b.node()[key].IsMap()) {
     Section s = b.section(key);
-    fb.type = face_type_from(s.require_choice("type"));
+    fb.type = value_of(kFaceTypeWords, s.require_choice("type"));
     if (fb.type == FaceType::moving_wall) {
       fb.velocity = s.require_vec3("velocity");
       if (fb.velocity[face / 2] != 0.0)
@@ -103,7 +95,7 @@ FaceBoundary parse_face(Section& b, int face) {
     if (fb.type == FaceType::pressure) fb.pressure = s.get<double>("pressure");
     s.finish();
   } else {
-    fb.type = face_type_from(b.choice(key));
+    fb.type = value_of(kFaceTypeWords, b.choice(key));
   }
   return fb;
 }
@@ -115,17 +107,7 @@ const char* face_name(int face) {
 }
 
 const char* face_type_name(FaceType t) {
-  switch (t) {
-    case FaceType::periodic:
-      return "periodic";
-    case FaceType::wall:
-      return "wall";
-    case FaceType::moving_wall:
-      return "moving_wall";
-    case FaceType::pressure:
-      return "pressure";
-  }
-  return "?";
+  return word_of(kFaceTypeWords, t).data();  // the words are literals: null-terminated
 }
 
 const MappingSchema& fluid_schema() {
@@ -152,14 +134,15 @@ const MappingSchema& fluid_schema() {
            .within(Bounds::positive())
            .in("m^2/s"),
        key::number("tau", "BGK relaxation time").or_default(0.6).within(Bounds::above(0.5)),
-       key::choice("precision", {"double", "float"}, "floating-point type").or_default("double"),
-       key::choice("porosity_lookup", {"nearest", "trilinear"},
+       key::choice("precision", words_of(kPrecisionWords), "floating-point type")
+           .or_default("double"),
+       key::choice("porosity_lookup", words_of(kPorosityLookupWords),
                    "how a node reads a body's smoothed reference porosity: nearest (the paper's "
                    "nearest voxel; narrower band, d in steps of 1/19, closer settling speeds: "
                    "docs/validation.md) or trilinear (d continuous in the pose; wider band: "
                    "docs/performance.md)")
            .or_default("nearest"),
-       key::choice("hydrodynamic_radius", {"calibrated", "nominal"},
+       key::choice("hydrodynamic_radius", words_of(kHydrodynamicRadiusWords),
                    "calibrated: the fluid sees each body's surface moved inward by the band's "
                    "measured hydrodynamic-radius excess at this tau and lookup (docs/method.md), "
                    "nominal: the true surface (the paper's construction)")
@@ -180,11 +163,11 @@ const MappingSchema& fluid_schema() {
        key::section("mean_velocity_control", control_schema(),
                     "uniform force that holds the mean fluid velocity")
            .absent_means("no control"),
-       key::choice("loads", {"penalization", "momentum_exchange"},
+       key::choice("loads", words_of(kLoadMethodWords),
                    "hydrodynamic load on bodies: from the penalization (conserves momentum) or by "
                    "momentum exchange")
            .or_default("penalization"),
-       key::choice("decomposition", {"regular", "balanced"},
+       key::choice("decomposition", words_of(kDecompositionWords),
                    "how the lattice is split over the fluid ranks: regular (equal blocks) or "
                    "balanced (the cuts of each axis placed so that every rank gets the same work "
                    "of the initial bodies; docs/scaling.md)")
@@ -194,6 +177,13 @@ const MappingSchema& fluid_schema() {
                    "penalization, load sums) in plain fluid cells, for decomposition: balanced "
                    "(measured: docs/scaling.md)")
            .or_default(10.0)
+           .within(Bounds::at_least(1.0)),
+       key::number("rebalance_above",
+                   "for decomposition: balanced, at a restart: the load imbalance (max / mean of "
+                   "the weighted work) measured at the checkpoint above which the lattice is cut "
+                   "anew by the work measured there; at or below it the checkpoint's cuts are "
+                   "kept (docs/scaling.md)")
+           .or_default(1.1)
            .within(Bounds::at_least(1.0)),
        key::section("boundaries", boundaries_schema(), "per-face boundary conditions")
            .absent_means("triply periodic"),
@@ -227,9 +217,9 @@ FluidParams parse_fluid(Section& s) {
   p.density = s.get<double>("density");
   p.viscosity = s.require<double>("viscosity");
   p.tau = s.get<double>("tau");
-  p.precision = s.choice("precision");
-  p.porosity_lookup = s.choice("porosity_lookup");
-  p.hydrodynamic_radius = s.choice("hydrodynamic_radius");
+  p.precision = value_of(kPrecisionWords, s.choice("precision"));
+  p.porosity_lookup = value_of(kPorosityLookupWords, s.choice("porosity_lookup"));
+  p.hydrodynamic_radius = value_of(kHydrodynamicRadiusWords, s.choice("hydrodynamic_radius"));
   for (int d = 0; d < 3; ++d) {
     const double n = p.domain[d] / p.dx;
     p.cells[d] = static_cast<int>(std::lround(n));
@@ -250,11 +240,10 @@ FluidParams parse_fluid(Section& s) {
     p.control.feed_forward = c->get<bool>("feed_forward");
     c->finish();
   }
-  p.loads = s.choice("loads") == "momentum_exchange" ? LoadMethod::momentum_exchange
-                                                     : LoadMethod::penalization;
-  p.decomposition = s.choice("decomposition") == "balanced" ? DecompositionKind::balanced
-                                                            : DecompositionKind::regular;
+  p.loads = value_of(kLoadMethodWords, s.choice("loads"));
+  p.decomposition = value_of(kDecompositionWords, s.choice("decomposition"));
   p.covered_cell_weight = s.get<double>("covered_cell_weight");
+  p.rebalance_above = s.get<double>("rebalance_above");
   {
     auto b = s.section_or_defaults("boundaries");
     for (int f = 0; f < 6; ++f) p.faces[f] = parse_face(b, f);
@@ -272,13 +261,15 @@ FluidParams parse_fluid(Section& s) {
   p.units.char_velocity = p.characteristic_velocity;
   p.units.char_length = p.characteristic_length;
   if (p.control.interval > 0)
-    p.control.every = std::max(1L, std::lround(p.control.interval / p.units.dt));
+    p.control.every = steps_between(p.control.interval, p.units.dt);
   const UnitConverter& u = p.units;
   if (p.tau < UnitLimits{}.min_tau) s.fail("tau", u.check());
-  if (p.hydrodynamic_radius == "calibrated" && !band_radius_excess_cells(p.tau, p.porosity_lookup))
+  if (p.hydrodynamic_radius == HydrodynamicRadius::calibrated &&
+      !band_radius_excess_cells(p.tau, p.porosity_lookup))
     s.fail("hydrodynamic_radius",
            "the band's radius excess is calibrated for tau in " + band_calibration_range() +
-               " with the " + p.porosity_lookup + " lookup; tau is " + std::to_string(p.tau) +
+               " with the " + std::string(word_of(kPorosityLookupWords, p.porosity_lookup)) +
+               " lookup; tau is " + std::to_string(p.tau) +
                ": set hydrodynamic_radius: nominal, or measure it (tools/calibrate_band.py)");
   if (const std::string m = u.check(); !m.empty()) s.fail("characteristic_velocity", m);
   p.output = parse_fluid_output(s, p.units, p.cells);

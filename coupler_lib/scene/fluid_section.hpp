@@ -18,6 +18,7 @@
 //     loads: penalization             # or momentum_exchange (docs/method-loads.md)
 //     decomposition: regular          # or balanced: cuts by the bodies' work (docs/scaling.md)
 //     covered_cell_weight: 10         # work of a covered cell in fluid cells (balanced)
+//     rebalance_above: 1.1            # restart: recut above this measured imbalance (balanced)
 //     boundaries:
 //       x_min: periodic               # periodic faces must be paired
 //       x_max: periodic
@@ -28,18 +29,12 @@
 #include <array>
 #include <string>
 
+#include "coupler_lib/scene/choices.hpp"
 #include "coupler_lib/scene/fluid_output_section.hpp"
 #include "coupler_lib/scene/units.hpp"
 #include "coupler_lib/scene/yaml_reader.hpp"
 
 namespace lbdem {
-
-enum class FaceType { periodic, wall, moving_wall, pressure };
-
-// How the fluid lattice is split over the fluid ranks (fluid_app/parallel/decomposition.hpp):
-// equal blocks, or a rectilinear grid of blocks whose cuts balance the weighted work of the
-// initial bodies (cells a body covers cost covered_cell_weight fluid cells).
-enum class DecompositionKind { regular, balanced };
 
 // One face of the box. Faces are indexed 2*axis + side (side 0 = min, 1 = max):
 // x_min, x_max, y_min, y_max, z_min, z_max.
@@ -65,12 +60,6 @@ struct MeanVelocityControl {
   bool feed_forward = true;        // start from the settling balance's exact force
 };
 
-// How the hydrodynamic load on a body is computed (docs/method-loads.md).
-enum class LoadMethod {
-  penalization,       // from the momentum the penalization exchanges (conserves momentum)
-  momentum_exchange,  // Galilean-invariant momentum exchange over the band's boundary links
-};
-
 struct FluidParams {
   std::array<double, 3> domain{};  // m, box size
   std::array<int, 3> cells{};      // derived: domain / dx
@@ -78,14 +67,14 @@ struct FluidParams {
   double density = 1000;           // kg/m^3
   double viscosity = 1e-6;         // kinematic, m^2/s
   double tau = 0.6;
-  std::string precision = "double";
+  Precision precision = Precision::float64;
   // How HLBM nodes read a body's reference porosity: nearest | trilinear (fluid_app/hlbm);
   // nearest by default, chosen from the settling numbers of docs/validation.md.
-  std::string porosity_lookup = "nearest";
+  PorosityLookup porosity_lookup = PorosityLookup::nearest;
   // nominal: the fluid sees the body's true surface (the paper's construction); calibrated: the
   // surface moved inward by the band's measured hydrodynamic-radius excess at this tau
   // (coupler_lib/scene/band_calibration.hpp, docs/method.md "Hydrodynamic radius calibration").
-  std::string hydrodynamic_radius = "calibrated";
+  HydrodynamicRadius hydrodynamic_radius = HydrodynamicRadius::calibrated;
   double characteristic_velocity = 0;  // m/s, 0 = not given
   double characteristic_length = 0;    // m
   std::array<double, 3> body_force{};  // m/s^2, uniform acceleration of the fluid
@@ -93,6 +82,7 @@ struct FluidParams {
   LoadMethod loads = LoadMethod::penalization;
   DecompositionKind decomposition = DecompositionKind::regular;
   double covered_cell_weight = 10;      // work of a covered cell / a fluid cell (balanced split)
+  double rebalance_above = 1.1;         // restart: recut when the checkpoint's imbalance is above
   std::array<FaceBoundary, 6> faces{};  // default: triply periodic
   UnitConverter units;
   FluidOutputParams output;  // fluid.output, fluid.stability, fluid.validation

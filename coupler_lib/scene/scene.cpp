@@ -41,7 +41,7 @@ const MappingSchema& scene_schema() {
       "the scene file: one YAML mapping of sections, read by both programs",
       {key::text("name", "name used in output file names (letters, digits, - _ .)")
            .or_default("scene"),
-       key::choice("log_level", {"trace", "debug", "info", "warn", "error"},
+       key::choice("log_level", words_of(kLogLevelWords),
                    "logging level (the command line's --log-level wins)")
            .or_default("info"),
        key::section("time", time_schema(), "simulated time span").required(),
@@ -67,7 +67,7 @@ Scene parse_scene(Section root, std::uint64_t hash) {
   sc.source = root.source();
   sc.name = root.get<std::string>("name");
   check_plain_name(root, "name", sc.name);
-  sc.log_level = root.choice("log_level");
+  sc.log_level = value_of(kLogLevelWords, root.choice("log_level"));
   {
     auto t = root.section("time");
     sc.time.end = t.require<double>("end");

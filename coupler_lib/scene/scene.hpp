@@ -24,7 +24,7 @@ struct Scene {
   std::string file;
   std::uint64_t hash = 0;  // FNV-1a of the file bytes
   std::string name;
-  std::string log_level = "info";
+  LogLevel log_level = LogLevel::info;
   TimeParams time;
   std::optional<FluidParams> fluid;  // absent: DEM-only scene
   std::optional<DemParams> dem;      // absent: fluid-only scene

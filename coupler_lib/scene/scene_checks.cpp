@@ -14,7 +14,7 @@ namespace lbdem {
 
 double fluid_memory_bytes(const FluidParams& fluid, bool bodies) {
   const double cells = double(fluid.cells[0]) * fluid.cells[1] * fluid.cells[2];
-  const double value = fluid.precision == "float" ? 4 : 8;
+  const double value = fluid.precision == Precision::float32 ? 4 : 8;
   return cells * (2 * 19 * value + (bodies ? 8 : 0));
 }
 
@@ -57,10 +57,8 @@ void check_resolution(const Scene& scene) {
     const int k = scene.bodies[i].shape;
     if (k < 0 || static_cast<size_t>(k) >= scene.shapes.size()) continue;
     const ShapeParams& sh = scene.shapes[static_cast<size_t>(k)];
-    // extents: semi-axes for spheres and ellipsoids, edges otherwise.
-    const bool semi_axes = sh.kind == "sphere" || sh.kind == "ellipsoid";
-    const double thinnest =
-        (semi_axes ? 2 : 1) * *std::min_element(sh.extents.begin(), sh.extents.end());
+    const double thinnest = (extents_are_semi_axes(sh.kind) ? 2 : 1) *
+                            *std::min_element(sh.extents.begin(), sh.extents.end());
     if (thinnest < dx) {
       std::ostringstream m;
       m << scene.file << ": bodies: body " << i << " (shape '" << sh.name << "') is " << thinnest

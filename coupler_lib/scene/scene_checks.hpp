@@ -24,7 +24,7 @@ double fluid_memory_bytes(const FluidParams& fluid, bool bodies);
 // job's nodes; 0: not checked).
 void check_whole_scene(const Scene& scene, double memory_bytes);
 
-// The box the DEM works in (dem_app/dem_setup.cpp resolves it alike): dem.box, else the fluid
+// The box the DEM works in (dem_app/setup/dem_setup.cpp resolves it alike): dem.box, else the fluid
 // domain from the origin; empty without a dem section or when neither is given.
 struct DemBox {
   std::array<double, 3> lo{0, 0, 0}, hi{0, 0, 0};

@@ -26,7 +26,7 @@ std::vector<Shape> build_scene_shapes(const Scene& scene) {
   std::vector<Shape> out;
   for (size_t i = 0; i < scene.shapes.size(); ++i) {
     ShapeParams p = scene.shapes[i];
-    if (scene.fluid && scene.fluid->hydrodynamic_radius == "calibrated")
+    if (scene.fluid && scene.fluid->hydrodynamic_radius == HydrodynamicRadius::calibrated)
       p.hydrodynamic_offset =
           *band_radius_excess_cells(scene.fluid->tau, scene.fluid->porosity_lookup) *
           scene.fluid->dx;

@@ -32,7 +32,8 @@ const MappingSchema& clump_schema() {
   static const MappingSchema m{
       "shapes[].clump",
       "contact clump: {file: path} or {method: ...}",
-      {key::choice("method", {"surface", "fill"}, "clump generator (or give 'file' instead)")
+      {key::choice("method", words_of(kClumpMethodWords),
+                   "clump generator (or give 'file' instead)")
            .absent_means("give file instead")},
       {{"file",
         "",
@@ -67,12 +68,12 @@ ClumpParams parse_clump(Section& c) {
   if (c.has("file")) {
     if (c.has("method"))
       c.fail("method", "give either 'file' (a clump file) or 'method' (generate), not both");
-    p.source = "file";
+    p.source = ClumpSource::file;
     p.file = existing_file(c, "file");
     p.scale = c.get<double>("scale");
   } else {
-    p.source = c.require_choice("method");
-    if (p.source == "fill") {
+    p.source = value_of(kClumpMethodWords, c.require_choice("method"));
+    if (p.source == ClumpSource::fill) {
       p.spheres = c.require<int>("spheres");
     } else {
       p.grid = c.require<int>("grid");
@@ -91,8 +92,7 @@ const MappingSchema& shape_schema() {
       "shapes[]",
       "a body shape of the catalogue",
       {key::text("name", "shape name used by bodies").required(),
-       key::choice("kind", {"sphere", "cube", "cuboid", "ellipsoid", "stl"}, "shape kind")
-           .required(),
+       key::choice("kind", words_of(kShapeKindWords), "shape kind").required(),
        key::number("voxel_size",
                    "voxel spacing in m (0: half the fluid spacing, or size/40 without a fluid)")
            .or_default(0.0)
@@ -149,17 +149,17 @@ std::vector<ShapeParams> parse_shapes(Section& root) {
     sh.name = s.require<std::string>("name");
     if (!names.insert(sh.name).second)
       s.fail("name", "a shape named '" + sh.name + "' is already in the catalogue");
-    sh.kind = s.require_choice("kind");
-    if (sh.kind == "sphere") {
+    sh.kind = value_of(kShapeKindWords, s.require_choice("kind"));
+    if (sh.kind == ShapeKind::sphere) {
       sh.size = s.require<double>("diameter");
       sh.extents = {sh.size / 2, sh.size / 2, sh.size / 2};
-    } else if (sh.kind == "cube") {
+    } else if (sh.kind == ShapeKind::cube) {
       sh.size = s.require<double>("edge");
       sh.extents = {sh.size, sh.size, sh.size};
-    } else if (sh.kind == "cuboid") {
+    } else if (sh.kind == ShapeKind::cuboid) {
       sh.extents = s.require_vec3("edges");
       sh.size = *std::max_element(sh.extents.begin(), sh.extents.end());
-    } else if (sh.kind == "ellipsoid") {
+    } else if (sh.kind == ShapeKind::ellipsoid) {
       sh.extents = s.require_vec3("semi_axes");
       sh.size = 2 * *std::max_element(sh.extents.begin(), sh.extents.end());
     } else {
@@ -180,7 +180,7 @@ std::vector<ShapeParams> parse_shapes(Section& root) {
     if (auto c = s.optional_section("clump"))
       sh.clump = parse_clump(*c);
     else
-      sh.clump.source = "default";
+      sh.clump.source = ClumpSource::shape_default;
     s.finish();
     out.push_back(sh);
   }

@@ -1,8 +1,15 @@
 #include "coupler_lib/scene/units.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include <spdlog/fmt/fmt.h>
 
 namespace lbdem {
+
+long steps_between(double interval, double dt) {
+  return std::max(1L, std::lround(interval / dt));
+}
 
 UnitConverter UnitConverter::from_tau(double dx, double tau, double nu, double rho) {
   UnitConverter u;

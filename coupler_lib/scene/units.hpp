@@ -10,6 +10,10 @@
 
 namespace lbdem {
 
+// Steps of length dt between two events `interval` seconds apart: the nearest whole number, at
+// least one (output, control and snapshot intervals of both programs).
+long steps_between(double interval, double dt);
+
 // Limits of the method, checked by UnitConverter::check.
 struct UnitLimits {
   double min_tau = 0.505;  // closer to 1/2 the BGK model loses stability (nu_lattice -> 0)

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "coupler_lib/output/series_resume.hpp"
-#include "dem_app/output_chunks.hpp"
+#include "dem_app/output/output_chunks.hpp"
 
 namespace lbdem {
 

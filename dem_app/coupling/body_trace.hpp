@@ -19,8 +19,8 @@ class BodyTrace {
   // Bytes written so far, on disk (rank 0; 0 elsewhere): what a checkpoint stores.
   long long flushed_bytes();
   // Collective: `states` and `loads` are this rank's owned bodies (loads may be empty at the
-  // first row); rank 0 gathers them in pieces of kOutputChunk ids (dem_app/output_chunks.hpp)
-  // and writes one row per body, sorted by id.
+  // first row); rank 0 gathers them in pieces of kOutputChunk ids
+  // (dem_app/output/output_chunks.hpp) and writes one row per body, sorted by id.
   void write(double time, std::span<const BodyState> states, std::span<const BodyLoad> loads);
   const std::string& path() const { return path_; }
 

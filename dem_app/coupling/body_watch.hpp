@@ -7,8 +7,8 @@
 //     c_s = dx / (sqrt(3) dt): the penalization can no longer follow the body;
 //   * a contact overlap of two bodies' clump spheres deeper than dem.max_overlap times the
 //     smaller sphere radius: the contact is too soft or too stiff for the DEM step.
-// The fluid side watches its own state (fluid_app/stability_watch.hpp); both programs then
-// agree at the exchange and stop together (coupled_dem.cpp, coupled_fluid.cpp).
+// The fluid side watches its own state (fluid_app/stability/stability_watch.hpp); both programs
+// then agree at the exchange and stop together (coupled_dem.cpp, coupled_fluid.cpp).
 #include <mpi.h>
 
 #include <cstdint>
@@ -17,7 +17,7 @@
 
 #include "coupler_lib/coupling/packets.hpp"
 #include "coupler_lib/scene/scene.hpp"
-#include "dem_app/dem_setup.hpp"
+#include "dem_app/setup/dem_setup.hpp"
 
 namespace lbdem {
 

@@ -8,17 +8,18 @@
 #include "coupler_lib/app/progress.hpp"
 #include "coupler_lib/coupling/coupling_session.hpp"
 #include "coupler_lib/coupling/dem_coupler.hpp"
+#include "coupler_lib/coupling/journal.hpp"
 #include "coupler_lib/coupling/world.hpp"
 #include "coupler_lib/geometry/display_surface.hpp"
 #include "coupler_lib/scene/scene_fingerprint.hpp"
 #include "coupler_lib/scene/shape_catalogue.hpp"
-#include "dem_app/body_output.hpp"
 #include "dem_app/coupling/body_trace.hpp"
 #include "dem_app/coupling/body_watch.hpp"
 #include "dem_app/coupling/dem_checkpoint.hpp"
-#include "dem_app/dem_run.hpp"
-#include "dem_app/dem_setup.hpp"
-#include "dem_app/lammps_engine.hpp"
+#include "dem_app/engine/lammps_engine.hpp"
+#include "dem_app/output/body_output.hpp"
+#include "dem_app/run/dem_run.hpp"
+#include "dem_app/setup/dem_setup.hpp"
 
 namespace lbdem {
 
@@ -75,7 +76,7 @@ int run_coupled_dem(AppContext& ctx) {
     DemRestart r;
     try {
       restart_from = restart_prefix(ctx.cli.restart);
-      r = read_dem_checkpoint(restart_from, session.header(0));
+      r = read_dem_checkpoint(restart_from, session.header(0), ctx.rank);
     } catch (const std::runtime_error& e) {
       throw SideError(e.what());
     }
@@ -83,7 +84,11 @@ int run_coupled_dem(AppContext& ctx) {
     trace_bytes = r.trace_bytes;
     SideInfo journal_ctx = ctx;  // the journal is identified by the scene fingerprint
     journal_ctx.scene_hash = scene_fingerprint(scene);
-    history = std::make_unique<DemCoupler>(journal_ctx, r.path);
+    try {
+      history = DemCoupler::replaying_journal(journal_ctx, r.part);
+    } catch (const std::runtime_error& e) {
+      throw SideError(e.what());
+    }
     if (ctx.rank == 0)
       ctx.log->info("restart from {} at step {} (t = {:.6e} s): replaying the DEM's {} steps",
                     restart_from, session.step(), r.header.time, session.step());
@@ -182,9 +187,13 @@ int run_coupled_dem(AppContext& ctx) {
                   ctx.cli.replay, session.step());
   // The journal served the checkpoints (each holds its own copy up to its step).
   coupler.reset();
+  if (!journal.empty()) {
+    std::error_code ec;
+    std::filesystem::remove(journal_part(journal, ctx.rank), ec);
+    MPI_Barrier(ctx.side_comm);  // every part gone before the folder is looked at
+  }
   if (ctx.rank == 0 && !journal.empty()) {
     std::error_code ec;
-    std::filesystem::remove(journal, ec);
     if (std::filesystem::is_empty(checkpoint_directory(scene), ec))
       std::filesystem::remove(checkpoint_directory(scene), ec);
   }

@@ -20,13 +20,15 @@
 #include "fluid_app/coupling/fluid_checkpoint.hpp"
 #include "fluid_app/coupling/momentum_audit.hpp"
 #include "fluid_app/coupling/settling_force.hpp"
+#include "fluid_app/coupling/solver_binding.hpp"
 #include "fluid_app/coupling/state_feed.hpp"
-#include "fluid_app/fluid_run.hpp"
 #include "fluid_app/hlbm/body_field.hpp"
 #include "fluid_app/hlbm/momentum_exchange.hpp"
 #include "fluid_app/hlbm/penalty_loads.hpp"
-#include "fluid_app/output/run_watch.hpp"
 #include "fluid_app/parallel/balance.hpp"
+#include "fluid_app/parallel/rebalance.hpp"
+#include "fluid_app/run/fluid_run.hpp"
+#include "fluid_app/run/run_watch.hpp"
 
 namespace lbdem {
 
@@ -134,25 +136,37 @@ int run_typed(AppContext& ctx) {
 
   const std::vector<Shape> shapes = build_scene_shapes(scene);
   CouplingSession session(ctx, scene, coupled_schedule(scene, shapes), replay ? nullptr : &world);
-  if (scene.fluid->hydrodynamic_radius == "calibrated")
+  if (scene.fluid->hydrodynamic_radius == HydrodynamicRadius::calibrated)
     ctx.log->info(
         "hydrodynamic radius calibrated: the band's excess at tau {} ({} lookup) is {:+.3f} "
         "cells, so the fluid sees every surface moved inward by that much (docs/method.md)",
-        scene.fluid->tau, scene.fluid->porosity_lookup,
+        scene.fluid->tau, word_of(kPorosityLookupWords, scene.fluid->porosity_lookup),
         *band_radius_excess_cells(scene.fluid->tau, scene.fluid->porosity_lookup));
-  FluidRun<T> run(ctx, shapes);
+  // A restart's layout comes from the checkpoint's record of the work (rebalance.hpp).
+  std::string restart_from;
+  LayoutChoice layout;
+  if (!ctx.cli.restart.empty()) {
+    try {
+      restart_from = restart_prefix(ctx.cli.restart);
+      layout =
+          restart_layout(*scene.fluid, read_checkpoint_work(restart_from, ctx.side_comm), ctx.size);
+    } catch (const std::runtime_error& e) {
+      throw SideError(e.what());
+    }
+  }
+  FluidRun<T> run(ctx, shapes, restart_from.empty() ? nullptr : &layout);
   FluidSolver<T>& solver = run.solver();
   int solver_rank = 0;
   MPI_Comm_rank(solver.comm(), &solver_rank);
   std::optional<FluidRestart> restart;
   std::vector<T> restored;  // this rank's populations from the checkpoint
-  if (!ctx.cli.restart.empty()) {
+  if (!restart_from.empty()) {
     try {
-      const std::string prefix = restart_prefix(ctx.cli.restart);
-      restart = read_fluid_checkpoint(prefix, session.header(0), solver, restored);
-      session.resume(prefix, restart->header.step);
-      ctx.log->info("restart from {} at step {} (t = {:.6e} s; written by {} fluid ranks)", prefix,
-                    restart->header.step, restart->header.time, restart->header.fluid_ranks);
+      restart = read_fluid_checkpoint(restart_from, session.header(0), solver, restored);
+      session.resume(restart_from, restart->header.step);
+      ctx.log->info("restart from {} at step {} (t = {:.6e} s; written by {} fluid ranks)",
+                    restart_from, restart->header.step, restart->header.time,
+                    restart->header.fluid_ranks);
     } catch (const std::runtime_error& e) {
       throw SideError(e.what());
     }
@@ -163,19 +177,18 @@ int run_typed(AppContext& ctx) {
       replay ? std::make_unique<FluidCoupler>(ctx, ctx.cli.replay, geometry)
              : std::make_unique<FluidCoupler>(world, geometry);
 
-  hlbm::Subdomain sub{solver.box(), geometry.periodic};
   hlbm::LatticeFrame frame{Eigen::Vector3d::Zero(), scene.fluid->units};
-  hlbm::BodyField<T> bodies(shapes, sub, frame, solver.porous(),
-                            hlbm::porosity_lookup_from(scene.fluid->porosity_lookup));
+  const hlbm::Subdomain sub = hlbm::subdomain_of(solver, *scene.fluid);
+  hlbm::BodyField<T> bodies(shapes, sub, frame, solver.porous(), scene.fluid->porosity_lookup);
   hlbm::PenaltyLoads<T> penalty_loads;
   const SettlingForce settling = settling_force(scene, shapes);
   if (settling.active) {
     // The controller (if any) adds its correction to this feed-forward (or, with
     // feed_forward: false, finds the force alone, as in the paper); without it the
     // compensating force simply adds to the scene's uniform body force.
-    if (scene.fluid->control.enabled) {
+    if (run.control()) {
       if (scene.fluid->control.feed_forward)
-        solver.set_feed_forward_force(settling.fluid_force_lattice);
+        run.control()->set_feed_forward(settling.fluid_force_lattice);
     } else {
       auto force = solver.uniform_force();
       for (int a = 0; a < 3; ++a) force[a] += settling.fluid_force_lattice[a];
@@ -184,9 +197,11 @@ int run_typed(AppContext& ctx) {
     ctx.log->info("{}", settling.description);
   }
 
-  // Triply periodic settling: the momentum audit at the coupling output steps.
+  // Triply periodic box: the momentum audit at the coupling output steps (with or without
+  // settling: without external forces it audits the exchange alone).
   std::unique_ptr<MomentumAudit> audit;
-  if (settling.active && session.schedule().output_interval > 0) {
+  if (sub.periodic[0] && sub.periodic[1] && sub.periodic[2] &&
+      session.schedule().output_interval > 0) {
     std::filesystem::path dir(scene.dem->output.directory);
     if (dir.is_relative()) dir = std::filesystem::path(scene.file).parent_path() / dir;
     if (ctx.rank == 0) std::filesystem::create_directories(dir);
@@ -197,6 +212,7 @@ int run_typed(AppContext& ctx) {
   if (restart) {
     // After the run's own set-up of forces (feed-forward), which the memory overrides.
     solver.restore(restart->memory);
+    if (run.control()) run.control()->restore(restart->control_integral);
     solver.set_interior_populations(restored);
     restored = {};
   }
@@ -207,8 +223,8 @@ int run_typed(AppContext& ctx) {
   if (audit && !restart) audit->write(0, 0.0, solver, first);
   bodies.update(first);
   if (restart)
-    restore_covered(penalty_loads, bodies, restart->covered,
-                    restart->header.fluid_ranks == ctx.size, solver_rank, solver.comm());
+    restore_covered(penalty_loads, bodies, restart->covered, layout.same_as_checkpoint, solver_rank,
+                    solver.comm());
   else
     run.start();
   // Every checkpoint holds a state that passed the stability check.
@@ -220,17 +236,25 @@ int run_typed(AppContext& ctx) {
     SeriesLengths lengths;
     lengths.series = watch.series_bytes();
     if (audit) lengths.momentum = audit->bytes();
-    write_fluid_checkpoint(prefix, header, solver, covered, lengths);
+    const PorousField<T>& field = solver.porous();
+    CheckpointWork work = measure_work(
+        solver.box(), field.active ? std::span<const float>(field.d) : std::span<const float>(),
+        scene.fluid->covered_cell_weight, solver.comm());
+    work.layout = run.layout_weights();
+    if (ctx.rank == 0)
+      ctx.log->info("checkpoint at step {}: load imbalance of the weighted work {:.3f}",
+                    header.step, work.imbalance);
+    write_fluid_checkpoint(prefix, header, solver,
+                           run.control() ? run.control()->integral() : std::array<double, 3>{},
+                           covered, lengths, work);
   });
 
   while (session.ongoing()) {
     const std::int64_t step = session.next_step();
     session.timed("lattice", [&] { run.step(); });
     const auto loads = session.timed("porosity + momentum exchange", [&] {
-      return penalty
-                 ? penalty_loads.loads(bodies, step)
-                 : hlbm::momentum_exchange(
-                       bodies, [&](int i, CellIndex c) { return solver.population(i, c); }, step);
+      return penalty ? penalty_loads.loads(bodies, step)
+                     : hlbm::momentum_exchange(bodies, hlbm::populations_of(solver), step);
     });
     feed.send(step, loads);
     // The audit, the agreement and a checkpoint need the states of this very step (a brief
@@ -258,7 +282,8 @@ int run_typed(AppContext& ctx) {
 }  // namespace
 
 int run_coupled_fluid(AppContext& ctx) {
-  return ctx.scene.fluid->precision == "float" ? run_typed<float>(ctx) : run_typed<double>(ctx);
+  return ctx.scene.fluid->precision == Precision::float32 ? run_typed<float>(ctx)
+                                                          : run_typed<double>(ctx);
 }
 
 }  // namespace lbdem

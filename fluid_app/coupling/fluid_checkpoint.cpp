@@ -16,7 +16,8 @@ namespace lbdem {
 
 namespace {
 
-constexpr int kMemoryValues = 13;  // force, integral, impulse, mean velocity (3 each), mass
+// force, controller integral, impulse, mean velocity (3 each), mass
+constexpr int kMemoryValues = 13;
 constexpr int kCoveredValues = 8;  // rank, id, Q (3), L (3)
 
 template <class T>
@@ -102,12 +103,31 @@ std::vector<double> read_table(hid_t file, const char* name, int cols) {
   return rows;
 }
 
+constexpr const char* kAxes[3] = {"x", "y", "z"};
+
+// One column per slice; an empty table is not written.
+void write_slices(hid_t file, const std::string& name, const SliceWeights& w, int rank) {
+  for (int a = 0; a < 3; ++a)
+    if (!w[a].empty()) write_table(file, (name + "_" + kAxes[a]).c_str(), w[a], 1, rank);
+}
+
+SliceWeights read_slices(hid_t file, const std::string& name) {
+  SliceWeights w;
+  for (int a = 0; a < 3; ++a) {
+    const std::string set = name + "_" + kAxes[a];
+    if (H5Lexists(file, set.c_str(), H5P_DEFAULT) > 0) w[a] = read_table(file, set.c_str(), 1);
+  }
+  return w;
+}
+
 }  // namespace
 
 template <class T>
 void write_fluid_checkpoint(const std::string& prefix, const CheckpointHeader& header,
-                            const FluidSolver<T>& solver, std::span<const CoveredRecord> mine,
-                            const SeriesLengths& lengths) {
+                            const FluidSolver<T>& solver,
+                            const std::array<double, 3>& control_integral,
+                            std::span<const CoveredRecord> mine, const SeriesLengths& lengths,
+                            const CheckpointWork& work) {
   const MPI_Comm comm = solver.comm();
   int rank = 0;
   MPI_Comm_rank(comm, &rank);
@@ -127,6 +147,9 @@ void write_fluid_checkpoint(const std::string& prefix, const CheckpointHeader& h
     write_attribute(file, "series_bytes", length[0]);
     write_attribute(file, "momentum_bytes", length[1]);
     write_attribute(file, "precision", std::string(sizeof(T) == 8 ? "double" : "float"));
+    write_attribute(file, "measured_imbalance", work.imbalance);
+    write_slices(file, "measured_work", work.measured, rank);
+    write_slices(file, "layout_weights", work.layout, rank);
     const hsize_t dims[4] = {hsize_t(d3q19::Q), hsize_t(b.global[2]), hsize_t(b.global[1]),
                              hsize_t(b.global[0])};
     const H5Handle space(H5Screate_simple(4, dims, nullptr), H5Sclose, "population space");
@@ -142,7 +165,7 @@ void write_fluid_checkpoint(const std::string& prefix, const CheckpointHeader& h
 
     const SolverMemory m = solver.memory();
     std::vector<double> memory;
-    for (const auto* a : {&m.force, &m.integral, &m.impulse, &m.mean.velocity})
+    for (const auto* a : {&m.force, &control_integral, &m.impulse, &m.mean.velocity})
       memory.insert(memory.end(), a->begin(), a->end());
     memory.push_back(m.mean.mass);
     write_table(file, "solver_memory", memory, kMemoryValues, rank);
@@ -203,7 +226,7 @@ FluidRestart read_fluid_checkpoint(const std::string& prefix, const CheckpointHe
     mem_state.steps = r.header.step;
     for (int k = 0; k < 3; ++k) {
       mem_state.force[k] = m[k];
-      mem_state.integral[k] = m[3 + k];
+      r.control_integral[k] = m[3 + k];
       mem_state.impulse[k] = m[6 + k];
       mem_state.mean.velocity[k] = m[9 + k];
     }
@@ -234,12 +257,31 @@ FluidRestart read_fluid_checkpoint(const std::string& prefix, const CheckpointHe
   return r;
 }
 
+CheckpointWork read_checkpoint_work(const std::string& prefix, MPI_Comm comm) {
+  const std::string path = fluid_half(prefix);
+  CheckpointWork w;
+  try {
+    const H5Handle file = open_parallel_file(path, comm);
+    w.fluid_ranks = read_checkpoint_header(file).fluid_ranks;
+    w.imbalance = read_double_attribute(file, "measured_imbalance");
+    w.measured = read_slices(file, "measured_work");
+    w.layout = read_slices(file, "layout_weights");
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error("cannot restart from " + path + ": not a usable fluid checkpoint (" +
+                             e.what() + "); give an older checkpoint of the folder");
+  }
+  return w;
+}
+
 template void write_fluid_checkpoint<double>(const std::string&, const CheckpointHeader&,
                                              const FluidSolver<double>&,
-                                             std::span<const CoveredRecord>, const SeriesLengths&);
+                                             const std::array<double, 3>&,
+                                             std::span<const CoveredRecord>, const SeriesLengths&,
+                                             const CheckpointWork&);
 template void write_fluid_checkpoint<float>(const std::string&, const CheckpointHeader&,
-                                            const FluidSolver<float>&,
-                                            std::span<const CoveredRecord>, const SeriesLengths&);
+                                            const FluidSolver<float>&, const std::array<double, 3>&,
+                                            std::span<const CoveredRecord>, const SeriesLengths&,
+                                            const CheckpointWork&);
 template FluidRestart read_fluid_checkpoint<double>(const std::string&, const CheckpointHeader&,
                                                     const FluidSolver<double>&,
                                                     std::vector<double>&);

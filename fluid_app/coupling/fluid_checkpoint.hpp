@@ -7,12 +7,17 @@
 //                     so a restart may use another decomposition). Memory: one extra copy of
 //                     the rank's interior populations while writing; file: 19 x 8 B per cell
 //                     in double (4 B in float).
-//   solver_memory     step count, uniform force, controller integral, applied impulse, mean
-//                     flow (SolverMemory).
+//   solver_memory     step count, uniform force, the mean-velocity controller's integral,
+//                     applied impulse, mean flow (SolverMemory and MeanFlowControl::integral).
 //   covered           per fluid rank and body: the covered fluid momentum Q and moment L of
 //                     the last step, which the next penalization load differences against.
-//   attributes        the checkpoint header, a checksum of the populations, and the length
-//                     of the CSV series at the checkpoint (series, momentum audit).
+//   measured_work_{x,y,z}, layout_weights_{x,y,z}
+//                     the work of the lattice per slice of cells measured at the checkpoint and
+//                     the slice weights its cuts came from (absent: regular blocks), for a
+//                     restart's layout (fluid_app/parallel/rebalance.hpp).
+//   attributes        the checkpoint header, a checksum of the populations, the length of the
+//                     CSV series at the checkpoint (series, momentum audit), and the load
+//                     imbalance of the measured work.
 // The porosity field is not stored: it is rebuilt from the body states of the checkpoint's
 // step, which the DEM side sends again at the restart.
 #include <array>
@@ -22,7 +27,8 @@
 #include <vector>
 
 #include "coupler_lib/coupling/checkpoint_files.hpp"
-#include "fluid_app/fluid_solver.hpp"
+#include "fluid_app/parallel/rebalance.hpp"
+#include "fluid_app/solver/fluid_solver.hpp"
 
 namespace lbdem {
 
@@ -39,15 +45,23 @@ struct SeriesLengths {
 };
 
 // Collective over the solver's ranks: writes fluid_half(prefix) through a temporary name.
+// `control_integral`: the mean-velocity controller's (zero without one).
 template <class T>
 void write_fluid_checkpoint(const std::string& prefix, const CheckpointHeader& header,
-                            const FluidSolver<T>& solver, std::span<const CoveredRecord> mine,
-                            const SeriesLengths& lengths);
+                            const FluidSolver<T>& solver,
+                            const std::array<double, 3>& control_integral,
+                            std::span<const CoveredRecord> mine, const SeriesLengths& lengths,
+                            const CheckpointWork& work);
+
+// Collective: the work and layout record of fluid_half(prefix), before the solver is built.
+// Throws std::runtime_error naming the file when it is unreadable.
+CheckpointWork read_checkpoint_work(const std::string& prefix, MPI_Comm comm);
 
 struct FluidRestart {
   CheckpointHeader header;
-  SolverMemory memory;                 // to restore after the run's own set-up of forces
-  std::vector<CoveredRecord> covered;  // every rank's records of the stopped run
+  SolverMemory memory;                       // to restore after the run's own set-up of forces
+  std::array<double, 3> control_integral{};  // MeanFlowControl::restore
+  std::vector<CoveredRecord> covered;        // every rank's records of the stopped run
   SeriesLengths lengths;
 };
 

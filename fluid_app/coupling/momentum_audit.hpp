@@ -7,9 +7,17 @@
 //   applied_px, applied_py, applied_pz: impulse of all external forces since the start:
 //                                       the uniform force on every node plus the bodies' net
 //                                       weight W (DEM side), integrated over the steps
-// all in N s. With the exact feed-forward force the fluid's and the bodies' external forces
-// cancel and fluid + bodies stays at its initial value to round-off; with the controller the
-// change equals `applied`. tools/momentum_audit.py checks it.
+//   fluid_lx, fluid_ly, fluid_lz:       angular momentum of the fluid outside the bodies about
+//                                       the box centre c (minimum-image lever arms)
+//   bodies_lx, bodies_ly, bodies_lz:    sum_k I_k w_k + (x_k - c) x m_k v_k (minimum image)
+// momenta in N s, angular momenta in N m s. With the exact feed-forward force the fluid's and
+// the bodies' external forces cancel and fluid + bodies stays at its initial value to
+// round-off; with the controller the change equals `applied`. The angular momentum about c is
+// conserved only without external torques and only until a disturbance reaches the box's seam
+// (the faces half a box from c), where streaming moves a population by a box length and so
+// changes its lever arm (docs/method-loads.md section 7). tools/validate_case.py checks both.
+#include <Eigen/Dense>
+
 #include <array>
 #include <fstream>
 #include <span>
@@ -19,7 +27,7 @@
 #include "coupler_lib/coupling/packets.hpp"
 #include "coupler_lib/geometry/shape.hpp"
 #include "coupler_lib/scene/scene.hpp"
-#include "fluid_app/fluid_solver.hpp"
+#include "fluid_app/solver/fluid_solver.hpp"
 
 namespace lbdem {
 
@@ -45,7 +53,8 @@ class MomentumAudit {
  private:
   std::string path_;
   const Scene& scene_;
-  std::vector<double> volume_;  // by shape, m^3
+  std::vector<double> volume_;            // by shape, m^3
+  std::vector<Eigen::Matrix3d> inertia_;  // by shape, per unit density, shape frame, m^5
   std::array<double, 3> weight_;
   MPI_Comm comm_;
   int rank_ = 0;

@@ -15,13 +15,6 @@
 
 namespace lbdem::hlbm {
 
-PorosityLookup porosity_lookup_from(const std::string& name) {
-  if (name == "trilinear") return PorosityLookup::trilinear;
-  if (name == "nearest") return PorosityLookup::nearest;
-  throw std::invalid_argument("porosity lookup must be 'trilinear' or 'nearest', got '" + name +
-                              "'");
-}
-
 ReferencePorosity::ReferencePorosity(const Voxels& voxels) : h_(voxels.h) {
   const auto& n = voxels.n;
   if (!(h_ > 0) || n[0] < 1 || n[1] < 1 || n[2] < 1 ||

@@ -31,10 +31,9 @@
 #include <vector>
 
 #include "coupler_lib/geometry/shape.hpp"
+#include "coupler_lib/scene/choices.hpp"
 
 namespace lbdem::hlbm {
-
-enum class PorosityLookup { trilinear, nearest };
 
 // The nearest lookup's rounding, floor(x + kNearestHalf) in voxel coordinates: round half up,
 // with ties judged within kTieTolerance voxels. A point on a voxel face is a tie, and a body
@@ -84,9 +83,6 @@ struct NearestBatch {
   }
   std::span<const std::uint32_t> mixed_nodes() const { return {mixed.data(), mixed_count}; }
 };
-
-// "trilinear" or "nearest" (the scene's fluid.porosity_lookup, already validated).
-PorosityLookup porosity_lookup_from(const std::string& name);
 
 class ReferencePorosity {
  public:

@@ -12,7 +12,7 @@
 
 #include "coupler_lib/scene/scene.hpp"
 #include "coupler_lib/scene/shape_catalogue.hpp"
-#include "dem_app/dem_setup.hpp"
+#include "dem_app/setup/dem_setup.hpp"
 #include "dem_scene_text.hpp"
 
 namespace lbdem {

@@ -6,7 +6,7 @@
 #include "coupler_lib/errors.hpp"
 #include "coupler_lib/scene/scene.hpp"
 #include "coupler_lib/scene/shape_catalogue.hpp"
-#include "dem_app/dem_setup.hpp"
+#include "dem_app/setup/dem_setup.hpp"
 
 namespace lbdem::test {
 

@@ -1,4 +1,4 @@
-// The lubrication law (dem_app/lubrication_law.hpp) and the dem.lubrication scene keys.
+// The lubrication law (dem_app/lubrication/lubrication_law.hpp) and the dem.lubrication scene keys.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,9 +9,9 @@
 
 #include "coupler_lib/scene/scene.hpp"
 #include "coupler_lib/scene/shape_catalogue.hpp"
-#include "dem_app/dem_setup.hpp"
-#include "dem_app/lubrication.hpp"
-#include "dem_app/lubrication_law.hpp"
+#include "dem_app/lubrication/lubrication.hpp"
+#include "dem_app/lubrication/lubrication_law.hpp"
+#include "dem_app/setup/dem_setup.hpp"
 
 namespace lbdem {
 namespace {

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "dem_app/restitution_map.hpp"
+#include "dem_app/contact/restitution_map.hpp"
 
 namespace lbdem {
 namespace {

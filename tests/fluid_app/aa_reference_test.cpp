@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 #include <mpi.h>
 
-#include "fluid_app/fluid_solver.hpp"
+#include "fluid_app/solver/fluid_solver.hpp"
 #include "tests/fluid_app/fluid_test_setup.hpp"
 #include "tests/fluid_app/reference_lattice.hpp"
 

@@ -1,8 +1,8 @@
 #include <gtest/gtest.h>
 #include <mpi.h>
 
-#include "fluid_app/fluid_solver.hpp"
 #include "fluid_app/lattice/d3q19.hpp"
+#include "fluid_app/solver/fluid_solver.hpp"
 #include "tests/fluid_app/fluid_test_setup.hpp"
 
 namespace lbdem {

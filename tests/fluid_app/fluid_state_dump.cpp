@@ -13,7 +13,8 @@
 #include <cstdlib>
 #include <vector>
 
-#include "fluid_app/fluid_solver.hpp"
+#include "fluid_app/forcing/mean_flow_control.hpp"
+#include "fluid_app/solver/fluid_solver.hpp"
 #include "tests/fluid_app/fluid_test_setup.hpp"
 
 using namespace lbdem;
@@ -33,6 +34,7 @@ void run(const char* file, std::array<int, 3> dims) {
   p.control.enabled = true;
   p.control.target = {0.002, 0, 0};
   FluidSolver<double> s(p, MPI_COMM_WORLD, dims);
+  MeanFlowControl<double> control(s, p);
 
   const LocalBox& b = s.box();
   PorousField<double>& pf = s.porous();
@@ -59,7 +61,10 @@ void run(const char* file, std::array<int, 3> dims) {
         }
       }
   pf.active = true;
-  for (int n = 0; n < 21; ++n) s.step();
+  for (int n = 0; n < 21; ++n) {
+    s.step();
+    control.after_step();
+  }
 
   const std::size_t cells = std::size_t(N[0]) * N[1] * N[2];
   std::vector<double> local(cells * 19, 0.0), global(rank == 0 ? cells * 19 : 0);

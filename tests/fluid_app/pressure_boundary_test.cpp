@@ -8,7 +8,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "fluid_app/fluid_solver.hpp"
+#include "fluid_app/solver/fluid_solver.hpp"
 #include "tests/fluid_app/fluid_test_setup.hpp"
 
 namespace lbdem {

@@ -6,7 +6,7 @@
 #include <limits>
 #include <vector>
 
-#include "fluid_app/stability_watch.hpp"
+#include "fluid_app/stability/stability_watch.hpp"
 #include "output/output_test_support.hpp"
 
 namespace lbdem {

@@ -9,11 +9,18 @@
 #   4. SIGTERM to one fluid rank mid-run: both programs write a checkpoint, end with status 0
 #      and print the restart command; the restart reproduces the straight run byte for byte;
 #   5. refusals: a flipped byte in the populations, a truncated fluid half, a missing DEM
-#      half, another scene (viscosity changed), another DEM rank count.
+#      half, a missing DEM journal part, another scene (viscosity changed), another DEM rank
+#      count.
 # With a fifth argument `quick`, parts 1 to 4 only; with `overlap`, parts 1 to 4 with
 # coupling.overlap (the fluid one step behind; it waits for the states at agreement steps,
-# so checkpoints hold one step of both programs and the restart is still byte for byte).
-# Usage: restart_test.sh BUILD_DIR SOURCE_DIR NF ND [quick|overlap]
+# so checkpoints hold one step of both programs and the restart is still byte for byte); with
+# `control`, parts 1 to 4 under fluid.mean_velocity_control without feed-forward (the
+# controller alone finds the force, so its integral must cross the restart); with `rebalance`,
+# parts 1 and 2 with fluid.decomposition: balanced and the restart keeping the checkpoint's cuts
+# (fluid.rebalance_above: 100, byte for byte), then the same checkpoint continued on NF ranks
+# cut anew by the work measured at the checkpoint (rebalance_above: 1): another layout, equal
+# within round-off.
+# Usage: restart_test.sh BUILD_DIR SOURCE_DIR NF ND [quick|overlap|control|rebalance]
 set -euo pipefail
 build=$1 src=$2 nf=$3 nd=$4 mode=${5:-}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
@@ -33,8 +40,12 @@ run() {  # run LOG NF ND [fluid/dem options...] : scene is scene.yaml
   mpirun -np "$a" "$fluid" "$@" scene.yaml : -np "$b" "$dem" "$@" scene.yaml > "$log" 2>&1
 }
 fail() { echo "FAIL: $*"; exit 1; }
+rebalance_above=100
 scene() {  # scene END [extra coupling lines]
   sed "s/end: 2.0e-2/end: $1/" "$src/tests/integration/restart_scene.yaml" > scene.yaml
+  [ "$mode" = control ] && sed -i 's/^  tau: 0.6$/  tau: 0.6\n  mean_velocity_control: {target: [0, 0, 0], gain: 0.3, integral_gain: 0.05, feed_forward: false}/' scene.yaml
+  [ "$mode" = rebalance ] \
+    && sed -i "s/^fluid:$/fluid:\n  decomposition: balanced\n  rebalance_above: $rebalance_above/" scene.yaml
   shift
   [ "$mode" = overlap ] && set -- "$@" "overlap: true"
   for line in "$@"; do printf '  %s\n' "$line" >> scene.yaml; done
@@ -54,6 +65,9 @@ run half.log "$nf" "$nd" || { cat half.log; fail "first half"; }
 n=$(ls "$ckdir"/*.fluid.h5 | wc -l)
 [ "$n" = 2 ] || { ls "$ckdir"; fail "checkpoint_keep 2 left $n fluid halves"; }
 [ -f "$ckdir/restart_sphere_step0000000040.dem.h5" ] || { ls "$ckdir"; fail "no step-40 DEM half"; }
+# The DEM half's journal: one part per DEM rank, pruned with its half.
+n=$(ls "$ckdir"/*.dem.rank*.h5 | wc -l)
+[ "$n" = $((2 * nd)) ] || { ls "$ckdir"; fail "$n DEM journal parts, expected 2 x $nd"; }
 cp -r "$ckdir" saved_checkpoints
 cp restart_sphere_bodies.csv half_bodies.csv
 cp restart_sphere_momentum.csv half_momentum.csv
@@ -63,12 +77,28 @@ grep -q "restart from .*step0000000040 at step 40" restarted.log || { cat restar
 cmp restart_sphere_bodies.csv straight_bodies.csv || fail "body trace after restart differs from the straight run"
 cmp restart_sphere_momentum.csv straight_momentum.csv || fail "momentum audit after restart differs"
 echo "restart at step 40 of 79 ($nf:$nd): body trace and momentum audit identical byte for byte"
+if [ "$mode" = rebalance ]; then
+  grep -q "kept from the checkpoint" restarted.log || { cat restarted.log; fail "layout not kept"; }
+  grep -m1 "decomposition" restarted.log
+fi
 
-# 3. another fluid rank count
+# 3. another fluid rank count (rebalance: the same count, cut by the measured work)
 rm -rf "$ckdir" && cp -r saved_checkpoints "$ckdir"
 cp half_bodies.csv restart_sphere_bodies.csv && cp half_momentum.csv restart_sphere_momentum.csv
 nf2=$((nf + 1))
+if [ "$mode" = rebalance ]; then
+  nf2=$nf rebalance_above=1
+  scene 2.0e-2
+fi
 run ranks.log "$nf2" "$nd" --restart "$ckdir" || { cat ranks.log; fail "restart on $nf2 fluid ranks"; }
+if [ "$mode" = rebalance ]; then
+  grep -q "rebalanced by the work measured at the checkpoint" ranks.log \
+    || { cat ranks.log; fail "no rebalance at the restart"; }
+  # New cuts regroup the partial loads: identical bits would mean the layout did not change.
+  ! cmp -s restart_sphere_bodies.csv straight_bodies.csv || fail "the new cuts changed nothing"
+  grep -m1 "decomposition" ranks.log
+  [ "$(grep -m1 -o 'imbalance of the weighted work [0-9.]*' half.log)" ] || fail "no imbalance line"
+fi
 /usr/bin/python3 - straight_bodies.csv restart_sphere_bodies.csv <<'PY'
 import csv, sys
 a = list(csv.reader(open(sys.argv[1]))); b = list(csv.reader(open(sys.argv[2])))
@@ -80,9 +110,13 @@ for ra, rb in zip(a[1:], b[1:]):
         worst = max(worst, abs(x - y) / max(abs(x), abs(y), 1e-30) if abs(x - y) > 1e-300 else 0.0)
 # Positions, velocities and loads: summation order only (a few ulps growing over 40 steps);
 # near-zero components make the relative figure large, so the test bounds it loosely.
-print(f"restart on another fluid rank count: largest relative difference {worst:.3e}")
+print(f"restart on another fluid layout: largest relative difference {worst:.3e}")
 assert worst < 1e-6, worst
 PY
+if [ "$mode" = rebalance ]; then
+  echo "PASS: restart with rebalancing ($nf:$nd) in $(echo "$(date +%s.%N) - $started" | bc) s"
+  exit 0
+fi
 
 # 4. SIGTERM mid-run
 rm -rf "$ckdir" restart_sphere_bodies.csv restart_sphere_momentum.csv
@@ -109,7 +143,7 @@ cmp restart_sphere_bodies.csv straight_bodies.csv || fail "trace after SIGTERM +
 cmp restart_sphere_momentum.csv straight_momentum.csv || fail "audit after SIGTERM + restart differs"
 echo "SIGTERM: checkpoint written, restart identical byte for byte"
 
-if [ "$mode" = quick ] || [ "$mode" = overlap ]; then
+if [ "$mode" = quick ] || [ "$mode" = overlap ] || [ "$mode" = control ]; then
   echo "PASS: restart ($nf:$nd) in $(echo "$(date +%s.%N) - $started" | bc) s"
   exit 0
 fi
@@ -134,6 +168,8 @@ fresh && truncate -s 2000 "$prefix.fluid.h5"
 refuse truncated "not a readable checkpoint" "$nf" "$nd"
 fresh && rm "$prefix.dem.h5"
 refuse missing_half "is missing; a restart needs both halves" "$nf" "$nd" "$prefix.fluid.h5"
+fresh && rm "$prefix.dem.rank0.h5"
+refuse missing_part "journal part .* of DEM rank 0 is missing" "$nf" "$nd"
 fresh && sed -i 's/viscosity: 1.0e-6/viscosity: 1.1e-6/' scene.yaml
 refuse other_scene "written for another scene" "$nf" "$nd"
 scene 2.0e-2

@@ -7,7 +7,7 @@ Forces are given as lambda = F / (6 pi mu a U), U the speed of each body.
 * brenner_pair(h, a): the same for two equal spheres approaching each other, each at U
   (Brenner 1961 / Maude 1961; cosh(alpha) = 1 + h / (2a)).
 * correction(...): the sub-grid correction dem_app applies, written from the same equations as
-  dem_app/lubrication_law.hpp (Jeffrey & Onishi 1984 singular terms, minus their value at h_c,
+  dem_app/lubrication/lubrication_law.hpp (Jeffrey & Onishi 1984 singular terms, minus their value at h_c,
   saturated at h_min), to add it to the lattice force recorded for a body whose motion is
   prescribed.
 """

@@ -6,7 +6,7 @@ Paths in a scene are relative to the scene file's folder. A coupled run writes
                                              (time,id,x,y,z,vx,vy,vz,wx,wy,wz,qw,qx,qy,qz,fx..tz)
   <dem.output.directory>/<name>_bodies.h5    one group per snapshot (position, orientation, ...)
   <fluid.output.directory>/<name>_series.csv the fluid's domain means (time_s, mean_uz_m_s, ...)
-  <dem.output.directory>/<name>_momentum.csv the momentum audit of a triply periodic settling run
+  <dem.output.directory>/<name>_momentum.csv the momentum audit of a triply periodic run
                                              (fluid_p*, bodies_p*, applied_p*, N s)
 """
 import csv

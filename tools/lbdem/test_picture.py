@@ -52,7 +52,7 @@ class Picture(unittest.TestCase):
 
 class BodyOutput(unittest.TestCase):
     def test_reads_the_dem_snapshots(self):
-        # The layout dem_app/body_output.cpp writes: one group per snapshot, a time attribute.
+        # The layout dem_app/output/body_output.cpp writes: one group per snapshot, a time attribute.
         with tempfile.TemporaryDirectory() as d:
             path = os.path.join(d, "b.h5")
             with h5py.File(path, "w") as h5:

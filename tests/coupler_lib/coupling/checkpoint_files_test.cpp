@@ -78,6 +78,21 @@ TEST(CheckpointFiles, PruneKeepsTheNewestOfItsOwnSide) {
   EXPECT_TRUE(fs::exists(f.at("s_step0000000030.fluid.h5")));
 }
 
+TEST(CheckpointFiles, PruneTakesTheDemJournalPartsWithTheirHalf) {
+  const Folder f;
+  for (const char* name : {"s_step0000000010.dem.h5", "s_step0000000010.dem.rank0.h5",
+                           "s_step0000000010.dem.rank1.h5", "s_step0000000020.dem.h5",
+                           "s_step0000000020.dem.rank0.h5", "s_step0000000020.dem.rank1.h5"})
+    f.touch(name);
+  prune_checkpoints(scene_in(f), "dem", 1);
+  EXPECT_FALSE(fs::exists(f.at("s_step0000000010.dem.h5")));
+  EXPECT_FALSE(fs::exists(f.at("s_step0000000010.dem.rank0.h5")));
+  EXPECT_FALSE(fs::exists(f.at("s_step0000000010.dem.rank1.h5")));
+  EXPECT_TRUE(fs::exists(f.at("s_step0000000020.dem.h5")));
+  EXPECT_TRUE(fs::exists(f.at("s_step0000000020.dem.rank0.h5")));
+  EXPECT_TRUE(fs::exists(f.at("s_step0000000020.dem.rank1.h5")));
+}
+
 TEST(CheckpointFiles, HeaderMismatchesSayWhatToChange) {
   CheckpointHeader expected;
   expected.side = "dem";

@@ -93,7 +93,7 @@ TEST(Schedule, CouplingKeysAreCheckedByTheReader) {
                 .coupling.exchange_interval,
             1);
   EXPECT_THROW(coupled("coupling: {wait: spin}\n"), SceneError);
-  EXPECT_EQ(coupled("coupling: {wait: blocking}\n").coupling.wait, "blocking");
+  EXPECT_EQ(coupled("coupling: {wait: blocking}\n").coupling.wait, WaitMode::blocking);
   EXPECT_TRUE(coupled().coupling.overlap);  // the default: measured, docs/coupling-overlap.md
   EXPECT_FALSE(coupled("coupling: {overlap: false}\n").coupling.overlap);
   EXPECT_THROW(coupled("coupling: {overlap: 2}\n"), SceneError);

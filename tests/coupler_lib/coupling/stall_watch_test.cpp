@@ -4,6 +4,8 @@
 
 #include <thread>
 
+#include "coupler_lib/coupling/world.hpp"
+
 namespace lbdem {
 namespace {
 
@@ -59,6 +61,77 @@ TEST(StallWatch, TheAutomaticLimitAllowsTheSetUpThenAMinuteAndGrowsWithTheSlowes
   EXPECT_GT(w.limit_s(), StallWatch::kAutomaticFloor);
   w.begin(4);
   EXPECT_NO_THROW(w.check());
+}
+
+TEST(StallWatch, PauseStepsAreTheCheckpointAndFieldStepsAndTheWaitsAfterThem) {
+  PauseSteps p;
+  EXPECT_FALSE(p.held_by(100));
+  p.checkpoint_every = 50;
+  p.fields_every = 30;
+  EXPECT_TRUE(p.at(50));
+  EXPECT_TRUE(p.at(90));
+  EXPECT_FALSE(p.at(0));  // the set-up has its own allowance
+  EXPECT_FALSE(p.at(70));
+  EXPECT_TRUE(p.held_by(51));
+  EXPECT_TRUE(p.held_by(60));
+  EXPECT_FALSE(p.held_by(62));
+}
+
+TEST(StallWatch, AWaitAroundACheckpointGetsThePauseAllowanceWithoutLiftingTheStepLimit) {
+  StallWatch w(0, dem_peer());
+  w.expect_pauses(PauseSteps{10, 0});
+  for (int k = 0; k < StallWatch::kSetUpWaits; ++k) {
+    w.begin(k / 2);
+    w.end();
+  }
+  w.begin(9);
+  EXPECT_DOUBLE_EQ(w.limit_s(), StallWatch::kAutomaticFloor);
+  w.end();
+  // The waits of the checkpoint step and the one after it may hold the other's write.
+  w.begin(10);
+  EXPECT_DOUBLE_EQ(w.limit_s(), StallWatch::kSetUpLimit);
+  std::this_thread::sleep_for(std::chrono::milliseconds(1300));
+  EXPECT_NO_THROW(w.check());
+  w.end();
+  w.begin(11);
+  EXPECT_DOUBLE_EQ(w.limit_s(), StallWatch::kSetUpLimit);
+  w.end();
+  // The 1.3 s write is not a step: the limit of the following steps is still the floor.
+  w.begin(12);
+  EXPECT_DOUBLE_EQ(w.limit_s(), StallWatch::kAutomaticFloor);
+}
+
+TEST(StallWatch, AnAgreementDuringTheSetUpDoesNotUseUpItsAllowance) {
+  StallWatch w(0, dem_peer());
+  // An agreement after each of the set-up's packet waits but the last.
+  for (int k = 0; k + 1 < StallWatch::kSetUpWaits; ++k) {
+    w.begin(k / 2);
+    w.end();
+    w.begin(k / 2, StallWatch::Wait::agreement);
+    EXPECT_DOUBLE_EQ(w.limit_s(), StallWatch::kSetUpLimit);
+    w.end();
+  }
+  // The last packet wait of the set-up still has its allowance, the next one not.
+  w.begin(1);
+  EXPECT_DOUBLE_EQ(w.limit_s(), StallWatch::kSetUpLimit);
+  w.end();
+  w.begin(2);
+  EXPECT_DOUBLE_EQ(w.limit_s(), StallWatch::kAutomaticFloor);
+}
+
+TEST(StallWatch, TheMessageNamesWhatThisProgramWaitsFor) {
+  StallWatch w(0.01, dem_peer());
+  w.begin(100, StallWatch::Wait::agreement);
+  std::this_thread::sleep_for(std::chrono::milliseconds(30));
+  try {
+    w.check();
+    FAIL() << "no error after the limit";
+  } catch (const SideError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("has sent nothing for"), std::string::npos) << m;
+    EXPECT_NE(m.find("waits for the agreement of both programs at step 100"), std::string::npos)
+        << m;
+  }
 }
 
 TEST(StallWatch, CheckStatesTheLimitAndTheCheckpointSize) {

@@ -18,7 +18,7 @@ namespace {
 
 ShapeParams params(const char* kind, double a, double b, double c) {
   ShapeParams p;
-  p.kind = kind;
+  p.kind = value_of(kShapeKindWords, kind);
   p.extents = {a, b, c};
   return p;
 }

@@ -20,25 +20,25 @@ const double kPi = std::acos(-1.0);
 
 TEST(BandCalibration, TableGivesTheMeasuredExcessAndFallsWithTau) {
   // Measured points are returned as measured (tools/calibrate_band.py, d/dx 8).
-  EXPECT_DOUBLE_EQ(*band_radius_excess_cells(0.6, "nearest"), 0.346);
-  EXPECT_DOUBLE_EQ(*band_radius_excess_cells(1.0, "nearest"), -0.130);
-  EXPECT_DOUBLE_EQ(*band_radius_excess_cells(0.6, "trilinear"), 0.402);
+  EXPECT_DOUBLE_EQ(*band_radius_excess_cells(0.6, PorosityLookup::nearest), 0.346);
+  EXPECT_DOUBLE_EQ(*band_radius_excess_cells(1.0, PorosityLookup::nearest), -0.130);
+  EXPECT_DOUBLE_EQ(*band_radius_excess_cells(0.6, PorosityLookup::trilinear), 0.402);
   // Between them, monotone: more viscous exchange per step, a thinner effective band.
-  double last = *band_radius_excess_cells(0.505, "nearest");
+  double last = *band_radius_excess_cells(0.505, PorosityLookup::nearest);
   for (int i = 51; i <= 300; ++i) {
     const double tau = i / 100.0;
-    const double e = *band_radius_excess_cells(tau, "nearest");
+    const double e = *band_radius_excess_cells(tau, PorosityLookup::nearest);
     EXPECT_LT(e, last) << tau;
     last = e;
     // The trilinear band is wider than the nearest one at every tau.
-    EXPECT_GT(*band_radius_excess_cells(tau, "trilinear"), e) << tau;
+    EXPECT_GT(*band_radius_excess_cells(tau, PorosityLookup::trilinear), e) << tau;
   }
   // Interpolation in ln(tau - 1/2): halfway in that variable, halfway in the excess.
   const double mid = 0.5 + std::sqrt(0.3 * 0.4);  // between tau 0.8 and 0.9
-  EXPECT_NEAR(*band_radius_excess_cells(mid, "nearest"), 0.5 * (0.053 - 0.045), 1e-12);
-  EXPECT_FALSE(band_radius_excess_cells(0.5001, "nearest"));
-  EXPECT_FALSE(band_radius_excess_cells(3.5, "nearest"));
-  EXPECT_FALSE(band_radius_excess_cells(0.6, "cubic"));
+  EXPECT_NEAR(*band_radius_excess_cells(mid, PorosityLookup::nearest), 0.5 * (0.053 - 0.045),
+              1e-12);
+  EXPECT_FALSE(band_radius_excess_cells(0.5001, PorosityLookup::nearest));
+  EXPECT_FALSE(band_radius_excess_cells(3.5, PorosityLookup::nearest));
 }
 
 const char* kCoupled = R"(
@@ -69,8 +69,8 @@ std::string with(const std::string& key) {
 
 TEST(BandCalibration, CalibratedIsTheDefaultAndShrinksOnlyWhatTheFluidSees) {
   const Scene cal = parse(kCoupled), nom = parse(with("  hydrodynamic_radius: nominal\n"));
-  EXPECT_EQ(cal.fluid->hydrodynamic_radius, "calibrated");
-  EXPECT_EQ(nom.fluid->hydrodynamic_radius, "nominal");
+  EXPECT_EQ(cal.fluid->hydrodynamic_radius, HydrodynamicRadius::calibrated);
+  EXPECT_EQ(nom.fluid->hydrodynamic_radius, HydrodynamicRadius::nominal);
   const auto a = build_scene_shapes(cal), b = build_scene_shapes(nom);
   const double delta = 0.346 * 1.0e-4;  // tau 0.6, nearest
   // Sphere: the fluid's lattice holds a sphere of radius a - delta (volume fractions: exact to
@@ -93,7 +93,7 @@ TEST(BandCalibration, CalibratedIsTheDefaultAndShrinksOnlyWhatTheFluidSees) {
 ShapeParams params(const std::string& kind, double size, std::array<double, 3> extents) {
   ShapeParams p;
   p.name = kind;
-  p.kind = kind;
+  p.kind = value_of(kShapeKindWords, kind);
   p.size = size;
   p.extents = extents;
   return p;
@@ -137,7 +137,7 @@ TEST(BandCalibration, OutsideTheMeasuredTausCalibratedIsRefusedNominalWorks) {
     EXPECT_NE(m.find("nominal"), std::string::npos) << m;
   }
   text.insert(text.find("  tau: 4.0\n") + 11, "  hydrodynamic_radius: nominal\n");
-  EXPECT_EQ(parse(text).fluid->hydrodynamic_radius, "nominal");
+  EXPECT_EQ(parse(text).fluid->hydrodynamic_radius, HydrodynamicRadius::nominal);
   try {
     parse(with("  hydrodynamic_radius: smaller\n"));
     FAIL() << "expected a SceneError";

@@ -90,12 +90,12 @@ TEST(Scene, WrongTypeAndMissingKey) {
 // fluid.porosity_lookup and dem.dt_rule: each value is read, anything else is refused with
 // the key and the admissible values.
 TEST(Scene, PorosityLookupAndDemStepRuleAreChoices) {
-  EXPECT_EQ(parse(kMinimal).fluid->porosity_lookup, "nearest");
+  EXPECT_EQ(parse(kMinimal).fluid->porosity_lookup, PorosityLookup::nearest);
   Scene s =
       parse(std::string(kMinimal) + "  porosity_lookup: trilinear\ndem: {dt_rule: particle}\n");
-  EXPECT_EQ(s.fluid->porosity_lookup, "trilinear");
-  EXPECT_EQ(s.dem->dt_rule, "particle");
-  EXPECT_EQ(parse(std::string(kMinimal) + "dem: {}\n").dem->dt_rule, "clump_sphere");
+  EXPECT_EQ(s.fluid->porosity_lookup, PorosityLookup::trilinear);
+  EXPECT_EQ(s.dem->dt_rule, DtRule::particle);
+  EXPECT_EQ(parse(std::string(kMinimal) + "dem: {}\n").dem->dt_rule, DtRule::clump_sphere);
   for (const std::string bad : {"  porosity_lookup: cubic\n", "dem: {dt_rule: body}\n"}) {
     try {
       parse(std::string(kMinimal) + bad);

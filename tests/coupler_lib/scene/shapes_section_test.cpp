@@ -45,18 +45,18 @@ shapes:
      clump: {method: surface, grid: 10, radius_ratio: 0.8, center_sphere: false}}
 )");
   ASSERT_EQ(s.size(), 5u);
-  EXPECT_EQ(s[0].kind, "sphere");
+  EXPECT_EQ(s[0].kind, ShapeKind::sphere);
   EXPECT_DOUBLE_EQ(s[0].size, 2.0e-3);
-  EXPECT_EQ(s[0].clump.source, "default");
-  EXPECT_EQ(s[1].clump.source, "file");
+  EXPECT_EQ(s[0].clump.source, ClumpSource::shape_default);
+  EXPECT_EQ(s[1].clump.source, ClumpSource::file);
   EXPECT_NE(s[1].clump.file.find("configs/shapes/cube_489_surface.clump"), std::string::npos);
   EXPECT_DOUBLE_EQ(s[1].clump.scale, 1.0e-3);
   EXPECT_DOUBLE_EQ(s[2].size, 3.0);
-  EXPECT_EQ(s[2].clump.source, "fill");
+  EXPECT_EQ(s[2].clump.source, ClumpSource::fill);
   EXPECT_EQ(s[2].clump.spheres, 20);
   EXPECT_DOUBLE_EQ(s[3].size, 2.0);
   EXPECT_DOUBLE_EQ(s[3].voxel_size, 0.05);
-  EXPECT_EQ(s[4].kind, "stl");
+  EXPECT_EQ(s[4].kind, ShapeKind::stl);
   EXPECT_DOUBLE_EQ(s[4].size, 2.0);  // unit cube STL scaled by 2
   EXPECT_EQ(s[4].clump.grid, 10);
   EXPECT_FALSE(s[4].clump.center_sphere);

@@ -6,8 +6,8 @@
 
 #include "coupler_lib/scene/scene.hpp"
 #include "coupler_lib/scene/shape_catalogue.hpp"
-#include "dem_app/dem_setup.hpp"
-#include "dem_app/lammps_engine.hpp"
+#include "dem_app/engine/lammps_engine.hpp"
+#include "dem_app/setup/dem_setup.hpp"
 
 namespace lbdem::test {
 

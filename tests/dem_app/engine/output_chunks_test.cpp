@@ -1,4 +1,4 @@
-// Body output gathered in id ranges (dem_app/output_chunks.hpp): the pieces, concatenated on
+// Body output gathered in id ranges (dem_app/output/output_chunks.hpp): the pieces, concatenated on
 // rank 0, are every rank's items ordered by id, equal ids in rank order, for pieces smaller
 // than the id range (the production piece is 65536 ids; here 7). Run on 1 and 2 ranks.
 #include <gtest/gtest.h>
@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "coupler_lib/coupling/packets.hpp"
-#include "dem_app/output_chunks.hpp"
+#include "dem_app/output/output_chunks.hpp"
 
 namespace lbdem {
 namespace {

@@ -9,7 +9,7 @@
 
 #include <cmath>
 
-#include "dem_app/quaternion.hpp"
+#include "dem_app/engine/quaternion.hpp"
 #include "validation_support.hpp"
 
 namespace lbdem {

@@ -11,7 +11,7 @@
 #include <string>
 #include <utility>
 
-#include "dem_app/lubrication_law.hpp"
+#include "dem_app/lubrication/lubrication_law.hpp"
 #include "validation_support.hpp"
 
 namespace lbdem {

@@ -1,5 +1,5 @@
 // Binary collision of two equal spheres: the measured restitution must match the requested
-// one (the restitution map of dem_app/restitution_map.hpp, through LAMMPS's damping tsuji).
+// one (the restitution map of dem_app/contact/restitution_map.hpp, through LAMMPS's damping tsuji).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -14,10 +14,10 @@
 #include <map>
 #include <vector>
 
+#include "fluid_app/coupling/solver_binding.hpp"
 #include "fluid_app/hlbm/body_field.hpp"
 #include "fluid_app/hlbm/momentum_exchange.hpp"
 #include "fluid_app/hlbm/penalty_loads.hpp"
-#include "fluid_app/hlbm/solver_binding.hpp"
 #include "tests/fluid_app/fluid_test_setup.hpp"
 #include "tests/fluid_app/hlbm/hlbm_fixtures.hpp"
 

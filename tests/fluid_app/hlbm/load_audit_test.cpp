@@ -15,8 +15,8 @@
 #include <numbers>
 #include <vector>
 
-#include "fluid_app/fluid_solver.hpp"
-#include "fluid_app/hlbm/solver_binding.hpp"
+#include "fluid_app/coupling/solver_binding.hpp"
+#include "fluid_app/solver/fluid_solver.hpp"
 #include "tests/fluid_app/fluid_test_setup.hpp"
 #include "tests/fluid_app/hlbm/hlbm_fixtures.hpp"
 

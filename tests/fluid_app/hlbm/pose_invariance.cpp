@@ -30,8 +30,8 @@
 
 #include "coupler_lib/geometry/build_shape.hpp"
 #include "coupler_lib/scene/band_calibration.hpp"
-#include "fluid_app/fluid_solver.hpp"
-#include "fluid_app/hlbm/solver_binding.hpp"
+#include "fluid_app/coupling/solver_binding.hpp"
+#include "fluid_app/solver/fluid_solver.hpp"
 #include "tests/fluid_app/fluid_test_setup.hpp"
 #include "tests/fluid_app/hlbm/hlbm_fixtures.hpp"
 
@@ -98,13 +98,13 @@ std::vector<Pose> poses() {
 Shape make_shape(const Case& c, double dx) {
   ShapeParams p;
   p.name = c.kind;
-  p.kind = c.kind;
+  p.kind = value_of(kShapeKindWords, c.kind);
   p.size = c.size * dx;
   const double e = c.kind == "sphere" ? p.size / 2 : p.size;
   p.extents = {e, e, e};
-  p.clump.source = "fill";
+  p.clump.source = ClumpSource::fill;
   p.clump.spheres = 1;  // the clump plays no part here
-  p.hydrodynamic_offset = *band_radius_excess_cells(c.tau, "nearest") * dx;
+  p.hydrodynamic_offset = *band_radius_excess_cells(c.tau, PorosityLookup::nearest) * dx;
   return build_shape(p, 0.5 * dx);
 }
 
@@ -281,11 +281,12 @@ TEST(PoseInvariance, SphereDragDenseD28Phi0343) {
 }
 
 // Spinning sphere (the torque path), d = 8 cells in a box of 4 d as coupled_sphere_spin:
-// T against Stokes' 8 pi mu a^3 Omega, tolerance 5 % (that test's). KNOWN TO FAIL the spread
-// (ctest WILL_FAIL; docs/validation.md section 7): mean +1.65 %, spread 2.94 %: the four unrotated
-// poses read +0.20 %, the rotated ones +1.65 to +3.19 % (the nearest lookup's stencil aligned with
-// the voxel lattice; docs/validation.md section 7).
-TEST(PoseInvariance, SphereSpinD8) {
+// T against Stokes' 8 pi mu a^3 Omega, tolerance 5 % (that test's). KNOWN OFF, the spread
+// (disabled; ctest pose_invariance_known_off_SphereSpinD8 runs it and checks the printed spread
+// lies in its recorded band): mean +1.65 %, spread 2.94 %: the four unrotated poses read
+// +0.20 %, the rotated ones +1.65 to +3.19 % (the nearest lookup's stencil aligned with the
+// voxel lattice; docs/validation.md section 7).
+TEST(PoseInvariance, DISABLED_SphereSpinD8) {
   Case c = sphere_in_array(Load::spin, 32, 0.0082, 0.8);
   c.size = 8;
   c.reference = 1.0;
@@ -294,10 +295,11 @@ TEST(PoseInvariance, SphereSpinD8) {
 }
 
 // Cube of edge 8 cells in a box of 24 (phi 0.037, tau 1): no published drag for a cubic array
-// of cubes, so the spread alone is asserted. KNOWN TO FAIL (ctest WILL_FAIL; docs/validation.md
-// section 7), spread 5.3 %: unrotated, K moves by 3.7 % with the sub-cell offset (faces on node
-// planes or between them), the rotated poses by 2.0 % (docs/validation.md section 7).
-TEST(PoseInvariance, CubeDragDiluteD8) {
+// of cubes, so the spread alone is asserted. KNOWN OFF (disabled; ctest
+// pose_invariance_known_off_CubeDragDiluteD8 runs it and checks the printed spread lies in its
+// recorded band), spread 5.28 %: unrotated, K moves by 3.7 % with the sub-cell offset (faces on
+// node planes or between them), the rotated poses by 2.0 % (docs/validation.md section 7).
+TEST(PoseInvariance, DISABLED_CubeDragDiluteD8) {
   Case c;
   c.kind = "cube";
   c.n = 24;

@@ -69,7 +69,7 @@ inline DriverOptions take_driver_options(int& argc, char** argv) {
 }
 
 inline double bounding_radius(const ShapeParams& s) {
-  return s.kind == "cube" ? 0.5 * s.size * std::sqrt(3.0) : 0.5 * s.size;
+  return s.kind == ShapeKind::cube ? 0.5 * s.size * std::sqrt(3.0) : 0.5 * s.size;
 }
 
 inline std::vector<double> shape_radii(const Scene& scene) {
