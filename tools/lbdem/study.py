@@ -18,8 +18,8 @@ from . import analysis, io, packing, references, run
 
 RUN_FILES = ("scene.yaml", "bodies.csv")
 # Largest change of fluid + bodies - applied impulse, relative to the bodies' largest momentum,
-# that the study accepts: the audit holds it to ~1e-12 in double and ~1e-5 in float precision
-# (docs/method-loads.md section 7); a lost force shows at the per cent level.
+# that the study accepts: the audit holds it to ~1e-12 in double and ~3e-5 in float precision
+# (docs/method-loads.md section 7, docs/precision.md); a lost force shows at the per cent level.
 MOMENTUM_TOLERANCE = 1e-3
 # The fluid's number type (the scene's fluid.precision): float halves the populations' memory
 # traffic; what it changes in the validation cases and the study is in docs/precision.md.
