@@ -18,9 +18,12 @@ from . import analysis, io, packing, references, run
 
 RUN_FILES = ("scene.yaml", "bodies.csv")
 # Largest change of fluid + bodies - applied impulse, relative to the bodies' largest momentum,
-# that the study accepts: the audit holds it to ~1e-12 in double and ~1e-5 in float precision
-# (docs/method-loads.md section 7); a lost force shows at the per cent level.
+# that the study accepts: the audit holds it to ~1e-12 in double and ~3e-5 in float precision
+# (docs/method-loads.md section 7, docs/precision.md); a lost force shows at the per cent level.
 MOMENTUM_TOLERANCE = 1e-3
+# The fluid's number type (the scene's fluid.precision): float halves the populations' memory
+# traffic; what it changes in the validation cases and the study is in docs/precision.md.
+PRECISIONS = ("double", "float")
 
 
 def momentum_change(audit_path):
@@ -73,6 +76,10 @@ class Study:
         self.a = packing.CUBE_PER_SPHERE * self.d
         self.nu, self.rho_f = float(f["viscosity"]), float(f.get("density", 1000.0))
         self.tau = float(f["tau"])
+        self.precision = f.get("precision")
+        if self.precision not in (None, *PRECISIONS):
+            raise ValueError(f"{config['_file']}: fluid.precision: expected one of "
+                             f"{', '.join(PRECISIONS)}, got {self.precision!r}")
         self.dx = self.d / float(f["cells_per_diameter"])
         # Lattice viscosity (tau - 1/2) / 3 in units dx^2 / dt.
         self.dt = (self.tau - 0.5) / 3.0 * self.dx**2 / self.nu
@@ -123,6 +130,8 @@ class Study:
                     "output": {"directory": "."}},
             "coupling": {"output_interval": r["output_interval"]},
         }
+        if self.precision:  # only when chosen, so that existing studies' scenes stay as they were
+            scene["fluid"]["precision"] = self.precision
         return merged(scene, self.c.get("scene_overrides"))
 
     def single_scene(self, shape):

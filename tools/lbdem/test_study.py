@@ -41,6 +41,19 @@ class Sweep(unittest.TestCase):
                 s.launch("a", scene, cells)
                 self.assertEqual(len(calls), 3)
 
+    def test_precision_reaches_every_generated_scene_only_when_chosen(self):
+        def study_with(fluid):
+            config = dict(CONFIG, fluid=dict(CONFIG["fluid"], **fluid), _file="/x/s.yaml",
+                          single={"box": [5, 5, 24], "release_below_top": 4, "end": 0.1})
+            return study.Study(config, "build", out="/x", log=lambda _: None)
+        self.assertNotIn("precision", study_with({}).base_scene("a", [1e-3] * 3, 0.01)["fluid"])
+        s = study_with({"precision": "float"})
+        self.assertEqual(s.base_scene("a", [1e-3] * 3, 0.01)["fluid"]["precision"], "float")
+        self.assertEqual(s.single_scene("sphere")[0]["fluid"]["precision"], "float")
+        with self.assertRaisesRegex(ValueError, r"/x/s.yaml: fluid.precision: expected one of "
+                                                r"double, float, got 'single'"):
+            study_with({"precision": "single"})
+
     def test_estimate_fits_lattice_and_body_cost(self):
         s = study.Study(dict(CONFIG, _file="/x/s.yaml"), "build", out="/x", log=lambda _: None)
         # Defaults: 9e6 cell updates/s, 0.22 ms per body and step at 6 cells per diameter.
