@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "coupler_lib/geometry/periodic.hpp"
+
 namespace lbdem {
 
 namespace {
@@ -35,7 +37,7 @@ double periodic_distance2(const FluidLayout& layout, const Box& box, const doubl
     double g;
     if (layout.periodic[d]) {
       const double lo = layout.domain.lo[d], len = layout.domain.hi[d] - lo;
-      const double c = x[d] - len * std::floor((x[d] - lo) / len);
+      const double c = lo + wrap_periodic(x[d] - lo, len);
       g = std::min({gap(c, box.lo[d], box.hi[d]), gap(c - len, box.lo[d], box.hi[d]),
                     gap(c + len, box.lo[d], box.hi[d])});
     } else {

@@ -4,6 +4,7 @@
 #include <iomanip>
 #include <stdexcept>
 
+#include "coupler_lib/geometry/periodic.hpp"
 #include "coupler_lib/output/series_resume.hpp"
 #include "fluid_app/lattice/d3q19.hpp"
 
@@ -44,8 +45,7 @@ namespace {
 // Minimum image of a lattice offset along axis a (docs/method-loads.md: the lever arms).
 double min_image(const FluidParams& f, const LocalBox& box, int a, double r) {
   if (!f.periodic(a)) return r;
-  const double len = box.global[a];
-  return r - len * std::floor(r / len + 0.5);
+  return lbdem::min_image(r, double(box.global[a]));
 }
 
 // Angular momentum about `centre` (lattice units) of this rank's interior populations.
@@ -104,8 +104,7 @@ void MomentumAudit::write(std::int64_t step, double time, const FluidSolver<T>& 
     bool mine = true;
     for (int a = 0; a < 3; ++a) {
       double x = s.x[a] / f.dx;
-      const double len = box.global[a];
-      if (f.periodic(a)) x -= len * std::floor(x / len);
+      if (f.periodic(a)) x = wrap_periodic(x, double(box.global[a]));
       mine = mine && x >= box.offset[a] && x < box.offset[a] + box.n[a];
     }
     if (!mine) continue;

@@ -71,7 +71,7 @@ void BodyField<T>::set_pose(Tracked& t, const BodyState& s) const {
   for (int a = 0; a < 3; ++a) {
     double x = (s.x[a] - frame_.origin[a]) / dx;
     const double len = sub_.box.global[a];
-    if (sub_.periodic[a]) x -= len * std::floor(x / len);
+    if (sub_.periodic[a]) x = wrap_periodic(x, len);
     t.x[a] = x;
   }
   const Eigen::Quaterniond q(s.q[0], s.q[1], s.q[2], s.q[3]);

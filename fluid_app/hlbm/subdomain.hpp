@@ -6,8 +6,8 @@
 // g sits at g + 1/2, so a lattice position is the SI position minus the domain's lower
 // corner, divided by dx.
 #include <array>
-#include <cmath>
 
+#include "coupler_lib/geometry/periodic.hpp"
 #include "fluid_app/lattice/local_box.hpp"
 
 namespace lbdem::hlbm {
@@ -24,8 +24,7 @@ struct Subdomain {
   // in a periodic direction an offset is shifted by the domain length to its nearest image.
   double min_image(int a, double r) const {
     if (!periodic[a]) return r;
-    const double len = box.global[a];
-    return r - len * std::floor(r / len + 0.5);
+    return lbdem::min_image(r, double(box.global[a]));
   }
 };
 

@@ -6,6 +6,7 @@
 #include <new>
 #include <stdexcept>
 
+#include "coupler_lib/geometry/periodic.hpp"
 #include "fluid_app/boundary/boundary_links.hpp"
 #include "fluid_app/kernel/aa_kernel.hpp"
 #include "fluid_app/lattice/d3q19.hpp"
@@ -38,13 +39,6 @@ std::array<FaceRule, 6> face_rules(const FluidParams& p) {
     r[f].density = 1.0 + 3.0 * p.faces[f].pressure / p.units.pressure();
   }
   return r;
-}
-
-// x wrapped into [0, len).
-template <class T>
-T wrap(T x, T len) {
-  x -= len * std::floor(x / len);
-  return x >= len ? x - len : x;
 }
 
 template <class T, bool Odd, Forcing M>
@@ -203,7 +197,7 @@ class FluidSolverImpl {
     for (std::size_t k = 0; k < bodies.size(); ++k) {
       for (int ax = 0; ax < 3; ++ax) {
         const T c = bodies[k].centre[ax];
-        table[ax][k + 1] = dec.periodic(ax) ? wrap(c, T(box.global[ax])) : c;
+        table[ax][k + 1] = dec.periodic(ax) ? wrap_periodic(c, T(box.global[ax])) : c;
         table[3 + ax][k + 1] = bodies[k].velocity[ax];
         table[6 + ax][k + 1] = bodies[k].omega[ax];
       }
@@ -332,7 +326,7 @@ std::array<T, 3> FluidSolver<T>::velocity(CellIndex cell) const {
     for (int k = 0; k < 3; ++k) {
       const bool per = m.dec.periodic(k);
       r[k] = T(m.box.offset[k] + p[k] - 1) + T(0.5) -
-             (per ? wrap(b.centre[k], T(m.box.global[k])) : b.centre[k]);
+             (per ? wrap_periodic(b.centre[k], T(m.box.global[k])) : b.centre[k]);
       if (per) {  // minimum image exactly as the kernel takes it
         const T len = T(m.box.global[k]);
         r[k] -= r[k] > T(0.5) * len ? len : T(0);
