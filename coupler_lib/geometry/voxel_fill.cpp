@@ -11,19 +11,7 @@ namespace lbdem {
 
 namespace {
 
-// Samples per axis inside a voxel cut by a curved surface or a mesh.
-constexpr int kSub = 8;
-
-// Fractions this close to 0 or 1 are round-off of a voxel wholly out or in; they are set
-// exactly, so that the porosity deep inside a body is exactly 0 and far from it exactly 1
-// (the kernel takes the plain path there). The volume this moves is below 1e-5 h^3 per voxel.
-constexpr double kSnap = 1e-5;
-
-float snapped(double f) {
-  if (f < kSnap) return 0.0f;
-  if (f > 1 - kSnap) return 1.0f;
-  return static_cast<float>(f);
-}
+constexpr int kSub = kFillSamplesPerAxis;
 
 // Length of [a0, a1] inside [b0, b1].
 double overlap(double a0, double a1, double b0, double b1) {
@@ -39,18 +27,28 @@ void fill_cuboid(const Eigen::Vector3d& edges, Voxels& v) {
         double f = 1;
         for (int d = 0; d < 3; ++d)
           f *= overlap(c[d] - 0.5 * h, c[d] + 0.5 * h, -0.5 * edges[d], 0.5 * edges[d]) / h;
-        v.fill[v.index(i, j, k)] = snapped(f);
+        v.fill[v.index(i, j, k)] = snapped_fraction(f);
       }
 }
 
-void fill_sampled(const SolidGeometry& solid, Voxels& v) {
+}  // namespace
+
+float snapped_fraction(double f) {
+  constexpr double kSnap = 1e-5;
+  if (f < kSnap) return 0.0f;
+  if (f > 1 - kSnap) return 1.0f;
+  return static_cast<float>(f);
+}
+
+void fill_sampled(const PointTest& inside, const DistanceBound& surface_distance_bound, Voxels& v) {
+  v.fill.assign(v.solid.size(), 0.0f);
   const double h = v.h, near = 0.5 * std::sqrt(3.0) * h;
   for (int k = 0; k < v.n[2]; ++k)
     for (int j = 0; j < v.n[1]; ++j)
       for (int i = 0; i < v.n[0]; ++i) {
         const std::size_t id = v.index(i, j, k);
         const Eigen::Vector3d c = v.center(i, j, k);
-        if (solid.distance_to_surface(c) > near) {
+        if (surface_distance_bound(c) > near) {
           v.fill[id] = v.solid[id];
           continue;
         }
@@ -59,13 +57,11 @@ void fill_sampled(const SolidGeometry& solid, Voxels& v) {
           for (int c1 = 0; c1 < kSub; ++c1)
             for (int c0 = 0; c0 < kSub; ++c0) {
               const Eigen::Vector3d off = (Eigen::Vector3d(c0, c1, c2).array() + 0.5) / kSub - 0.5;
-              in += solid.inside(c + h * off) ? 1 : 0;
+              in += inside(c + h * off) ? 1 : 0;
             }
         v.fill[id] = static_cast<float>(in) / (kSub * kSub * kSub);
       }
 }
-
-}  // namespace
 
 void fill_fractions(const TriangleMesh& mesh, Voxels& v) {
   const double h = v.h, sub = h / kSub;
@@ -135,7 +131,7 @@ void fill_fractions(const TriangleMesh& mesh, Voxels& v) {
       }
   }
   v.fill.resize(fill.size());
-  for (std::size_t id = 0; id < fill.size(); ++id) v.fill[id] = snapped(fill[id]);
+  for (std::size_t id = 0; id < fill.size(); ++id) v.fill[id] = snapped_fraction(fill[id]);
 }
 
 void fill_fractions(const SolidGeometry& solid, Voxels& v) {
@@ -146,7 +142,8 @@ void fill_fractions(const SolidGeometry& solid, Voxels& v) {
       return;
     case SolidGeometry::Kind::sphere:
     case SolidGeometry::Kind::ellipsoid:
-      fill_sampled(solid, v);
+      fill_sampled([&](const Eigen::Vector3d& x) { return solid.inside(x); },
+                   [&](const Eigen::Vector3d& x) { return solid.distance_to_surface(x); }, v);
       return;
     case SolidGeometry::Kind::mesh:
       fill_fractions(solid.triangles(), v);

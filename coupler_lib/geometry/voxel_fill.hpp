@@ -8,14 +8,34 @@
 //   surface crossings (the ray-parity test of the voxelization).
 // The volume error is then far below a percent: 0 for boxes, about 1e-4 for a sphere of 24
 // voxels across (tests/coupler_lib/geometry/voxel_fill_test.cpp).
+#include <functional>
+
 #include "coupler_lib/geometry/shape.hpp"
 #include "coupler_lib/geometry/solid_geometry.hpp"
 #include "coupler_lib/geometry/triangle_mesh.hpp"
 
 namespace lbdem {
 
+// Samples per axis in a voxel cut by a curved surface, and sub-columns per axis in a voxel
+// column cut by a mesh.
+inline constexpr int kFillSamplesPerAxis = 8;
+
+// A fraction within 1e-5 of 0 or 1 set exactly: round-off of a voxel wholly out or in, so
+// that the porosity deep inside a body is exactly 0 and far from it exactly 1 (the kernel
+// takes the plain path there). The volume this moves is below 1e-5 h^3 per voxel.
+float snapped_fraction(double f);
+
 // Sets voxels.fill (sized like voxels.solid) for the given solid in the voxels' frame.
 void fill_fractions(const SolidGeometry& solid, Voxels& voxels);
 void fill_fractions(const TriangleMesh& mesh, Voxels& voxels);
+
+// The sampled fill of a solid given by a point test: voxels whose centre lies more than
+// sqrt(3)/2 h from the surface by `surface_distance_bound` (a lower bound on the distance is
+// enough) keep their solid flag as fraction, the others are sampled at 8^3 points with
+// `inside`. voxels.solid must be set.
+using PointTest = std::function<bool(const Eigen::Vector3d&)>;
+using DistanceBound = std::function<double(const Eigen::Vector3d&)>;
+void fill_sampled(const PointTest& inside, const DistanceBound& surface_distance_bound,
+                  Voxels& voxels);
 
 }  // namespace lbdem
