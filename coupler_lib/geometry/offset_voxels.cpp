@@ -78,7 +78,7 @@ Intervals line_intervals(const TriangleMesh& m, const std::vector<int>& near, do
 }
 
 Voxels offset_mesh(const TriangleMesh& m, double offset, Voxels v) {
-  const double h = v.h, r = std::abs(offset), sub = h / kFillSamplesPerAxis;
+  const double h = v.h, r = std::abs(offset);
   const int n0 = v.n[0], n1 = v.n[1], n2 = v.n[2];
   const Eigen::Vector3d lo = v.origin - Eigen::Vector3d::Constant(0.5 * h);  // lattice corner
   // Triangles by the voxel columns their xy bounds, widened by r, overlap.
@@ -116,7 +116,8 @@ Voxels offset_mesh(const TriangleMesh& m, double offset, Voxels v) {
       // Fractions: each sub-column's intervals cut exactly by the voxel layers.
       for (int w = 0; w < kFillSamplesPerAxis; ++w)
         for (int u = 0; u < kFillSamplesPerAxis; ++u) {
-          const double x = lo.x() + i * h + (u + 0.5) * sub, y = lo.y() + j * h + (w + 0.5) * sub;
+          const Eigen::Vector2d o = subcolumn_offset(u, w);
+          const double x = lo.x() + (i + o.x()) * h, y = lo.y() + (j + o.y()) * h;
           for (const auto& [a, b] : line_intervals(m, tris, offset, x, y)) {
             const int k0 = std::max(0, static_cast<int>(std::floor((a - lo.z()) / h)));
             const int k1 = std::min(n2 - 1, static_cast<int>(std::floor((b - lo.z()) / h)));

@@ -93,13 +93,14 @@ void fill_fractions(const TriangleMesh& mesh, Voxels& v) {
       const auto& c = mesh.vertices[tri[2]];
       const double x0 = std::min({a.x(), b.x(), c.x()}), x1 = std::max({a.x(), b.x(), c.x()});
       const double y0 = std::min({a.y(), b.y(), c.y()}), y1 = std::max({a.y(), b.y(), c.y()});
-      const int u0 = std::max(0, static_cast<int>(std::floor((x0 - lo.x()) / sub - 0.5)));
-      const int u1 = std::min(m0 - 1, static_cast<int>(std::ceil((x1 - lo.x()) / sub - 0.5)));
+      // Sub-column u samples x within [u, u + 1) sub widths from the corner.
+      const int u0 = std::max(0, static_cast<int>(std::floor((x0 - lo.x()) / sub)) - 1);
+      const int u1 = std::min(m0 - 1, static_cast<int>(std::floor((x1 - lo.x()) / sub)) + 1);
       for (int w = 0; w < kSub; ++w) {
-        const double y = lo.y() + j * h + (w + 0.5) * sub;
-        if (y < y0 || y > y1) continue;
         for (int u = u0; u <= u1; ++u) {
-          const double x = lo.x() + (u + 0.5) * sub;
+          const Eigen::Vector2d o = subcolumn_offset(u % kSub, w);
+          const double x = lo.x() + (u / kSub + o.x()) * h, y = lo.y() + (j + o.y()) * h;
+          if (y < y0 || y > y1) continue;
           double z;
           if (pierces_column(tri, a, b, c, x, y, z))
             crossings[static_cast<std::size_t>(u) + static_cast<std::size_t>(m0) * w].push_back(z);
@@ -112,8 +113,9 @@ void fill_fractions(const TriangleMesh& mesh, Voxels& v) {
         if (zs.empty()) continue;
         if (zs.size() % 2 != 0) {
           std::ostringstream s;
-          s << "voxel fill: the vertical line x = " << lo.x() + (u + 0.5) * sub
-            << ", y = " << lo.y() + j * h + (w + 0.5) * sub << " crosses the surface " << zs.size()
+          const Eigen::Vector2d o = subcolumn_offset(u % kSub, w);
+          s << "voxel fill: the vertical line x = " << lo.x() + (u / kSub + o.x()) * h
+            << ", y = " << lo.y() + (j + o.y()) * h << " crosses the surface " << zs.size()
             << " times (odd); the mesh is not closed";
           throw ShapeError(s.str());
         }
