@@ -13,11 +13,15 @@ int edge_side(int iu, const Eigen::Vector3d& u, int iv, const Eigen::Vector3d& v
   const Eigen::Vector3d& p = flip ? v : u;
   const Eigen::Vector3d& q = flip ? u : v;
   const double dx = q.x() - p.x(), dy = q.y() - p.y();
-  const double e = dx * (y - p.y()) - dy * (x - p.x());
+  // The two products are compared, not subtracted: with -march=native the compiler may fuse
+  // a * b - c * d into one multiply-add, whose rounding leaves a residue of either sign where
+  // the products are equal (the line exactly through a vertex), and the fan around that
+  // vertex then counts the line twice or not at all.
+  const double left = dx * (y - p.y()), right = dy * (x - p.x());
   int s;
-  if (e > 0)
+  if (left > right)
     s = 1;
-  else if (e < 0)
+  else if (left < right)
     s = -1;
   else if (dy != 0)
     s = dy < 0 ? 1 : -1;
