@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 #include "coupler_lib/errors.hpp"
 #include "coupler_lib/geometry/clump_generator.hpp"
 #include "coupler_lib/geometry/clump_io.hpp"
 #include "coupler_lib/geometry/mass_properties.hpp"
 #include "coupler_lib/geometry/mesh_check.hpp"
+#include "coupler_lib/geometry/offset_voxels.hpp"
 #include "coupler_lib/geometry/stl_io.hpp"
 #include "coupler_lib/geometry/voxelize.hpp"
 
@@ -57,18 +59,16 @@ ShapeParams scaled_params(const ShapeParams& p, double factor) {
   return q;
 }
 
+bool offset_is_a_parameter(ShapeKind kind) {
+  return kind == ShapeKind::sphere || kind == ShapeKind::cube || kind == ShapeKind::cuboid;
+}
+
 ShapeParams offset_params(const ShapeParams& p, double offset) {
+  if (!offset_is_a_parameter(p.kind))
+    throw std::logic_error("offset_params: only spheres, cubes and cuboids");
   if (offset == 0) return p;
   ShapeParams q = p;
-  if (p.kind == ShapeKind::stl) {
-    const SolidGeometry solid = make_solid(p);
-    const double s =
-        1 - offset * surface_area(solid.triangles()) / (3 * std::abs(solid.exact_volume()));
-    if (!(s > 0)) throw ShapeError(no_solid_left(p, offset));
-    return scaled_params(p, s);
-  }
-  // size is a diameter or an edge (2 x the largest semi-axis for an ellipsoid); extents are
-  // edges (cube, cuboid) or semi-axes (sphere, ellipsoid).
+  // size is a diameter or an edge; extents are edges (cube, cuboid) or semi-axes (sphere).
   const bool semi_axes = extents_are_semi_axes(p.kind);
   q.size -= 2 * offset;
   for (double& e : q.extents) e -= semi_axes ? offset : 2 * offset;
@@ -163,12 +163,26 @@ Shape build_shape(const ShapeParams& p, double h) {
   shape.voxels = translated(std::move(vox), c);
   if (p.hydrodynamic_scale != 1 || p.hydrodynamic_offset != 0) {
     // The fluid's reference lattice is the voxelization of the scaled and offset solid, at the
-    // same spacing, in its own centroid frame; its bounding radius sets which fluid ranks
-    // receive the body.
-    const SolidGeometry scaled_solid =
-        make_solid(offset_params(scaled_params(p, p.hydrodynamic_scale), p.hydrodynamic_offset));
-    Voxels scaled = voxelize(scaled_solid, h, kVoxelPad);
-    const Eigen::Vector3d cs = mass_properties(scaled_solid).centroid;
+    // same spacing, centred on the scaled solid's centroid; its bounding radius sets which
+    // fluid ranks receive the body.
+    const ShapeParams sp = scaled_params(p, p.hydrodynamic_scale);
+    const double offset = p.hydrodynamic_offset;
+    Voxels scaled;
+    Eigen::Vector3d cs;
+    if (offset == 0 || offset_is_a_parameter(p.kind)) {
+      const SolidGeometry scaled_solid = make_solid(offset == 0 ? sp : offset_params(sp, offset));
+      scaled = voxelize(scaled_solid, h, kVoxelPad);
+      cs = mass_properties(scaled_solid).centroid;
+    } else {
+      // The parallel body lies in the frame of the solid it is taken from, so it is centred
+      // on that solid's centroid (its own centroid differs for a shape without symmetry).
+      const SolidGeometry scaled_solid = make_solid(sp);
+      if (!((scaled_solid.upper() - scaled_solid.lower()).minCoeff() > 2 * offset))
+        throw ShapeError(no_solid_left(p, offset));
+      scaled = voxelize_offset(scaled_solid, offset, h, kVoxelPad);
+      cs = mass_properties(scaled_solid).centroid;
+    }
+    if (scaled.count() == 0) throw ShapeError(no_solid_left(p, offset));
     shape.reference_volume = mass_properties(scaled).volume;
     shape.bounding_radius = bounding_radius(scaled, cs);
     shape.voxels = translated(std::move(scaled), cs);

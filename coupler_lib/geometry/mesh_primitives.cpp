@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <map>
+#include <numbers>
 
 namespace lbdem {
 
@@ -28,6 +29,24 @@ TriangleMesh box_mesh(const Eigen::Vector3d& edges) {
     m.triangles.push_back({q[0], q[1], q[2]});
     m.triangles.push_back({q[0], q[2], q[3]});
   }
+  orient_outward(m);
+  return m;
+}
+
+TriangleMesh torus_mesh(double ring, double tube, int around, int across) {
+  TriangleMesh m;
+  for (int i = 0; i < around; ++i)
+    for (int j = 0; j < across; ++j) {
+      const double u = 2 * std::numbers::pi * i / around, v = 2 * std::numbers::pi * j / across;
+      const double rho = ring + tube * std::cos(v);
+      m.vertices.emplace_back(rho * std::cos(u), rho * std::sin(u), tube * std::sin(v));
+    }
+  const auto id = [&](int i, int j) { return (i % around) * across + j % across; };
+  for (int i = 0; i < around; ++i)
+    for (int j = 0; j < across; ++j) {
+      m.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      m.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
   orient_outward(m);
   return m;
 }

@@ -18,6 +18,11 @@ TriangleMesh icosphere_mesh(double radius, int levels);
 // Regular octahedron |x| + |y| + |z| <= a (vertices on the axes at distance a).
 TriangleMesh octahedron_mesh(double a);
 
+// Torus about the z axis: centre-line radius `ring`, tube radius `tube` < ring, with
+// `around` segments along the ring and `across` around the tube (2 around across triangles);
+// all vertices on the torus, so the solid is inscribed in it.
+TriangleMesh torus_mesh(double ring, double tube, int around, int across);
+
 // Apply x -> R x + t to every vertex.
 void transform_mesh(TriangleMesh& mesh, const Eigen::Matrix3d& R, const Eigen::Vector3d& t);
 

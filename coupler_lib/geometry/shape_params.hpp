@@ -51,7 +51,7 @@ struct ShapeParams {
   double hydrodynamic_scale = 1;
   // m: the fluid's shape is then moved inward by this distance normal to its surface (negative:
   // outward); the calibrated hydrodynamic radius of the HLBM band (docs/method.md, "Hydrodynamic
-  // radius calibration"). Exact for spheres and boxes, see offset_params for the others.
+  // radius calibration"); build_shape.hpp and offset_voxels.hpp say how each kind is moved.
   double hydrodynamic_offset = 0;
   ClumpParams clump;
   std::string where;  // "scene.yaml:12: shapes[0]", for errors found after parsing

@@ -11,19 +11,7 @@ namespace lbdem {
 
 namespace {
 
-// Samples per axis inside a voxel cut by a curved surface or a mesh.
-constexpr int kSub = 8;
-
-// Fractions this close to 0 or 1 are round-off of a voxel wholly out or in; they are set
-// exactly, so that the porosity deep inside a body is exactly 0 and far from it exactly 1
-// (the kernel takes the plain path there). The volume this moves is below 1e-5 h^3 per voxel.
-constexpr double kSnap = 1e-5;
-
-float snapped(double f) {
-  if (f < kSnap) return 0.0f;
-  if (f > 1 - kSnap) return 1.0f;
-  return static_cast<float>(f);
-}
+constexpr int kSub = kFillSamplesPerAxis;
 
 // Length of [a0, a1] inside [b0, b1].
 double overlap(double a0, double a1, double b0, double b1) {
@@ -39,18 +27,28 @@ void fill_cuboid(const Eigen::Vector3d& edges, Voxels& v) {
         double f = 1;
         for (int d = 0; d < 3; ++d)
           f *= overlap(c[d] - 0.5 * h, c[d] + 0.5 * h, -0.5 * edges[d], 0.5 * edges[d]) / h;
-        v.fill[v.index(i, j, k)] = snapped(f);
+        v.fill[v.index(i, j, k)] = snapped_fraction(f);
       }
 }
 
-void fill_sampled(const SolidGeometry& solid, Voxels& v) {
+}  // namespace
+
+float snapped_fraction(double f) {
+  constexpr double kSnap = 1e-5;
+  if (f < kSnap) return 0.0f;
+  if (f > 1 - kSnap) return 1.0f;
+  return static_cast<float>(f);
+}
+
+void fill_sampled(const PointTest& inside, const DistanceBound& surface_distance_bound, Voxels& v) {
+  v.fill.assign(v.solid.size(), 0.0f);
   const double h = v.h, near = 0.5 * std::sqrt(3.0) * h;
   for (int k = 0; k < v.n[2]; ++k)
     for (int j = 0; j < v.n[1]; ++j)
       for (int i = 0; i < v.n[0]; ++i) {
         const std::size_t id = v.index(i, j, k);
         const Eigen::Vector3d c = v.center(i, j, k);
-        if (solid.distance_to_surface(c) > near) {
+        if (surface_distance_bound(c) > near) {
           v.fill[id] = v.solid[id];
           continue;
         }
@@ -59,13 +57,11 @@ void fill_sampled(const SolidGeometry& solid, Voxels& v) {
           for (int c1 = 0; c1 < kSub; ++c1)
             for (int c0 = 0; c0 < kSub; ++c0) {
               const Eigen::Vector3d off = (Eigen::Vector3d(c0, c1, c2).array() + 0.5) / kSub - 0.5;
-              in += solid.inside(c + h * off) ? 1 : 0;
+              in += inside(c + h * off) ? 1 : 0;
             }
         v.fill[id] = static_cast<float>(in) / (kSub * kSub * kSub);
       }
 }
-
-}  // namespace
 
 void fill_fractions(const TriangleMesh& mesh, Voxels& v) {
   const double h = v.h, sub = h / kSub;
@@ -97,13 +93,14 @@ void fill_fractions(const TriangleMesh& mesh, Voxels& v) {
       const auto& c = mesh.vertices[tri[2]];
       const double x0 = std::min({a.x(), b.x(), c.x()}), x1 = std::max({a.x(), b.x(), c.x()});
       const double y0 = std::min({a.y(), b.y(), c.y()}), y1 = std::max({a.y(), b.y(), c.y()});
-      const int u0 = std::max(0, static_cast<int>(std::floor((x0 - lo.x()) / sub - 0.5)));
-      const int u1 = std::min(m0 - 1, static_cast<int>(std::ceil((x1 - lo.x()) / sub - 0.5)));
+      // Sub-column u samples x within [u, u + 1) sub widths from the corner.
+      const int u0 = std::max(0, static_cast<int>(std::floor((x0 - lo.x()) / sub)) - 1);
+      const int u1 = std::min(m0 - 1, static_cast<int>(std::floor((x1 - lo.x()) / sub)) + 1);
       for (int w = 0; w < kSub; ++w) {
-        const double y = lo.y() + j * h + (w + 0.5) * sub;
-        if (y < y0 || y > y1) continue;
         for (int u = u0; u <= u1; ++u) {
-          const double x = lo.x() + (u + 0.5) * sub;
+          const Eigen::Vector2d o = subcolumn_offset(u % kSub, w);
+          const double x = lo.x() + (u / kSub + o.x()) * h, y = lo.y() + (j + o.y()) * h;
+          if (y < y0 || y > y1) continue;
           double z;
           if (pierces_column(tri, a, b, c, x, y, z))
             crossings[static_cast<std::size_t>(u) + static_cast<std::size_t>(m0) * w].push_back(z);
@@ -116,8 +113,9 @@ void fill_fractions(const TriangleMesh& mesh, Voxels& v) {
         if (zs.empty()) continue;
         if (zs.size() % 2 != 0) {
           std::ostringstream s;
-          s << "voxel fill: the vertical line x = " << lo.x() + (u + 0.5) * sub
-            << ", y = " << lo.y() + j * h + (w + 0.5) * sub << " crosses the surface " << zs.size()
+          const Eigen::Vector2d o = subcolumn_offset(u % kSub, w);
+          s << "voxel fill: the vertical line x = " << lo.x() + (u / kSub + o.x()) * h
+            << ", y = " << lo.y() + (j + o.y()) * h << " crosses the surface " << zs.size()
             << " times (odd); the mesh is not closed";
           throw ShapeError(s.str());
         }
@@ -135,7 +133,7 @@ void fill_fractions(const TriangleMesh& mesh, Voxels& v) {
       }
   }
   v.fill.resize(fill.size());
-  for (std::size_t id = 0; id < fill.size(); ++id) v.fill[id] = snapped(fill[id]);
+  for (std::size_t id = 0; id < fill.size(); ++id) v.fill[id] = snapped_fraction(fill[id]);
 }
 
 void fill_fractions(const SolidGeometry& solid, Voxels& v) {
@@ -146,7 +144,8 @@ void fill_fractions(const SolidGeometry& solid, Voxels& v) {
       return;
     case SolidGeometry::Kind::sphere:
     case SolidGeometry::Kind::ellipsoid:
-      fill_sampled(solid, v);
+      fill_sampled([&](const Eigen::Vector3d& x) { return solid.inside(x); },
+                   [&](const Eigen::Vector3d& x) { return solid.distance_to_surface(x); }, v);
       return;
     case SolidGeometry::Kind::mesh:
       fill_fractions(solid.triangles(), v);

@@ -11,10 +11,8 @@
 
 namespace lbdem {
 
-namespace {
-
-// Empty lattice centred on the box [lo, hi]: ceil(extent / h) voxels across (a tolerance of
-// 1e-9 keeps an extent that is a multiple of h from gaining a layer by round-off).
+// A tolerance of 1e-9 keeps an extent that is a multiple of h from gaining a layer by
+// round-off.
 Voxels empty_lattice(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, double h, int pad) {
   if (!(h > 0)) throw ShapeError("voxel spacing must be positive, got " + std::to_string(h));
   Voxels v;
@@ -39,8 +37,6 @@ Voxels empty_lattice(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, doubl
   v.solid.assign(static_cast<std::size_t>(total), 0);
   return v;
 }
-
-}  // namespace
 
 Voxels voxelize_mesh(const TriangleMesh& mesh, double h, int pad) {
   Eigen::Vector3d lo, hi;

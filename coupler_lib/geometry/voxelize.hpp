@@ -14,6 +14,10 @@
 
 namespace lbdem {
 
+// The empty lattice (solid flags 0, no fill) centred on the box [lo, hi], ceil(extent / h)
+// voxels across plus `pad` layers on every side.
+Voxels empty_lattice(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, double h, int pad);
+
 Voxels voxelize(const SolidGeometry& geometry, double h, int pad = 2);
 Voxels voxelize_mesh(const TriangleMesh& mesh, double h, int pad = 2);
 

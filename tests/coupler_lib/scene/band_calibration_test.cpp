@@ -104,17 +104,19 @@ TEST(BandCalibration, OffsetOfEachKind) {
   const ShapeParams s = offset_params(sphere, 0.1);
   EXPECT_DOUBLE_EQ(s.size, 1.8);
   EXPECT_DOUBLE_EQ(s.extents[0], 0.9);
-  const ShapeParams e = offset_params(params("ellipsoid", 6.0, {3, 2, 1}), -0.1);  // outward
-  EXPECT_DOUBLE_EQ(e.size, 6.2);
-  EXPECT_DOUBLE_EQ(e.extents[2], 1.1);
   EXPECT_DOUBLE_EQ(offset_params(params("cube", 1.0, {1, 1, 1}), 0.1).extents[1], 0.8);
-  // A mesh is scaled so that it loses the volume S delta to first order: for the shipped cube
-  // STL (S / V = 6 / edge) a scale of 1 - 2 delta, like the exact box.
+  // Ellipsoids and meshes are eroded on the fluid's lattice instead (offset_voxels.hpp): the
+  // shipped cube STL with its surface moved inward by edge / 80 embeds the cube of edge
+  // 0.975 edge (faces on sub-column boundaries at spacing edge / 20, so exactly).
+  EXPECT_FALSE(offset_is_a_parameter(ShapeKind::ellipsoid));
+  EXPECT_FALSE(offset_is_a_parameter(ShapeKind::stl));
   ShapeParams stl = params("stl", 1.0, {1, 1, 1});
   stl.file = std::string(LBDEM_SOURCE_DIR) + "/configs/shapes/cube.stl";
   const double edge = make_solid(stl).upper().x() - make_solid(stl).lower().x();
-  const ShapeParams m = offset_params(stl, 0.01 * edge);
-  EXPECT_NEAR(m.scale, 0.98, 1e-12);
+  stl.hydrodynamic_offset = edge / 80;
+  const Shape m = build_shape(stl, edge / 20);
+  EXPECT_NEAR(m.reference_volume / std::pow(0.975 * edge, 3), 1.0, 1e-6);
+  EXPECT_NEAR(m.mass.volume / std::pow(edge, 3), 1.0, 1e-12);
   // Too thin for the offset: a clear error naming the key.
   try {
     offset_params(sphere, 1.0);
