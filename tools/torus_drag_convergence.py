@@ -55,9 +55,6 @@ torus_stl(stl)
 def scale_old(offset):
     return 1 - offset * 2 / (3 * TUBE)
 
-# dem.neighbor_skin: LAMMPS's rigid/small needs the ghost cutoff to reach the whole clump;
-# the default (clump extent + half a sphere radius) falls short for a ring (its centroid lies
-# in the hole).
 def scene(name, dx, tau, radius, scale):
     return f"""name: {name}
 time: {{end: 1.5, progress_interval: 30}}
@@ -78,7 +75,6 @@ fluid:
 dem:
   gravity: [0, 0, 0]
   periodic: xyz
-  neighbor_skin: 6.0e-4
   output: {{directory: out_{name}}}
 shapes:
   - {{name: s, kind: stl, file: {stl}, scale: {scale!r}}}
