@@ -46,18 +46,6 @@ int run_coupled_dem(AppContext& ctx) {
   }
   LammpsEngine engine(ctx.side_comm, setup);
 
-  // Weight is applied by LAMMPS (dem.gravity on the body mass); the fluid has no hydrostatic
-  // pressure gradient, so the buoyancy of the displaced fluid is added here explicitly. In a
-  // triply periodic box the compensating force acts on every lattice node, the bodies' too,
-  // and reaches each body through the penalization load: nothing more is added here
-  // (coupler_lib/scene/settling_balance.hpp).
-  const double rho_f = scene.fluid->density;
-  const Eigen::Vector3d g(scene.dem->gravity[0], scene.dem->gravity[1], scene.dem->gravity[2]);
-  for (std::size_t id = 0; id < setup.bodies.size(); ++id) {
-    const double volume = setup.shapes[size_t(setup.bodies[id].shape)].mass.volume;
-    engine.set_extra_force(std::int64_t(id), -rho_f * volume * g);
-  }
-
   // The DEM half of a checkpoint is the journal of every exchange up to its step.
   const std::string journal =
       session.agrees()

@@ -126,8 +126,9 @@ void LammpsEngine::build() {
     MPI_Comm_size(comm_, &size);
     table_ = LoadTable(static_cast<std::int64_t>(setup_.bodies.size()), rank_, size);
     callback_ = {lmp_, &loads_, lubrication_.enabled() ? &lubrication_ : nullptr, {}};
-    // Buoyancy for DEM-only runs: -rho_f V g on every body.
-    const double rho_f = setup_.params.buoyancy_fluid_density;
+    // Buoyancy -rho_f V g on every body, before the set-up's force evaluation so that the
+    // first half-step of velocity carries it too.
+    const double rho_f = setup_.buoyancy_density;
     if (rho_f > 0)
       for (size_t i = 0; i < setup_.bodies.size(); ++i) {
         const double volume =

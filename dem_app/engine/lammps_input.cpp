@@ -17,14 +17,6 @@ std::ostringstream precise() {
   return s;
 }
 
-// Largest clump-sphere radius over the shapes that bodies use.
-double largest_sphere_radius(const DemSetup& setup) {
-  double r = 0;
-  for (const auto& b : setup.bodies)
-    for (double ri : setup.shapes[static_cast<size_t>(b.shape)].clump.radii) r = std::max(r, ri);
-  return r;
-}
-
 }  // namespace
 
 double rigid_small_extent(const DemSetup& setup) {
@@ -154,7 +146,7 @@ std::vector<std::string> lammps_setup_commands(const DemSetup& setup, double dt,
   double extent = rigid_small_extent(setup);
   for (const auto& b : setup.bodies)
     extent = std::max(extent, clump_extent(setup.shapes[static_cast<size_t>(b.shape)]));
-  const double skin = p.neighbor_skin > 0 ? p.neighbor_skin : 0.5 * largest_sphere_radius(setup);
+  const double skin = dem_neighbor_skin(setup);
   // The lubrication correction pairs clump spheres up to h_c apart from ghosts too.
   if (p.lubrication.enabled)
     extent = std::max(extent, 2 * largest_sphere_radius(setup) + p.lubrication.cutoff);

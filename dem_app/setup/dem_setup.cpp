@@ -29,8 +29,10 @@ DemSetup make_dem_setup(const Scene& scene, std::vector<Shape> shapes, bool coup
     throw SceneError(scene.file +
                      ": dem.buoyancy_fluid_density: only for DEM-only scenes; in a coupled run "
                      "the fluid side supplies buoyancy");
+  s.buoyancy_density =
+      coupled ? (scene.fluid ? scene.fluid->density : 0.0) : s.params.buoyancy_fluid_density;
   // The lubrication correction adds its forces through the same fix external.
-  s.external_loads = coupled || s.params.buoyancy_fluid_density > 0 || s.params.lubrication.enabled;
+  s.external_loads = coupled || s.buoyancy_density > 0 || s.params.lubrication.enabled;
   return s;
 }
 
@@ -73,6 +75,18 @@ void validate_dem_setup(const DemSetup& s) {
 
 double dem_time_step(const DemSetup& setup) {
   return dem_time_step(setup.params, setup.shapes, setup.bodies);
+}
+
+double largest_sphere_radius(const DemSetup& setup) {
+  double r = 0;
+  for (const auto& b : setup.bodies)
+    for (double ri : setup.shapes[static_cast<size_t>(b.shape)].clump.radii) r = std::max(r, ri);
+  return r;
+}
+
+double dem_neighbor_skin(const DemSetup& setup) {
+  return setup.params.neighbor_skin > 0 ? setup.params.neighbor_skin
+                                        : 0.5 * largest_sphere_radius(setup);
 }
 
 }  // namespace lbdem

@@ -21,6 +21,11 @@ struct DemSetup {
   std::array<double, 3> box_lo{}, box_hi{};  // resolved box
   std::vector<Shape> shapes;
   std::vector<BodyParams> bodies;
+  // rho_f of the buoyancy -rho_f V g on every body, applied by the engine from its set-up on:
+  // fluid.density in a coupled run (the lattice has no hydrostatic pressure gradient, so the
+  // displaced fluid's weight is not in the penalization load; docs/method.md, "Settling
+  // balance"), dem.buoyancy_fluid_density in a DEM-only run, 0 for none.
+  double buoyancy_density = 0;
   // Creates LAMMPS's fix external so per-body loads (hydrodynamic force and torque, or
   // buoyancy) can be imposed; scenes without loads do not pay for it.
   bool external_loads = false;
@@ -36,5 +41,12 @@ void validate_dem_setup(const DemSetup& setup);
 
 // DEM step of the setup's bodies (coupler_lib/scene/dem_time_step.hpp).
 double dem_time_step(const DemSetup& setup);
+
+// Largest clump-sphere radius over the shapes that bodies use, m.
+double largest_sphere_radius(const DemSetup& setup);
+
+// The neighbour skin both the contacts' and the lubrication correction's lists use:
+// dem.neighbor_skin, or half the largest clump-sphere radius when it is 0, m.
+double dem_neighbor_skin(const DemSetup& setup);
 
 }  // namespace lbdem

@@ -15,14 +15,6 @@ LubricationLaw law_of(const DemSetup& setup) {
 
 }  // namespace
 
-double dem_neighbor_skin(const DemSetup& setup) {
-  if (setup.params.neighbor_skin > 0) return setup.params.neighbor_skin;
-  double r = 0;
-  for (const auto& b : setup.bodies)
-    for (double ri : setup.shapes[static_cast<size_t>(b.shape)].clump.radii) r = std::max(r, ri);
-  return 0.5 * r;
-}
-
 Lubrication make_lubrication(const DemSetup& setup, const std::vector<Shape>& shapes,
                              const std::vector<Shape>& lammps_shapes) {
   if (!setup.params.lubrication.enabled) return {};

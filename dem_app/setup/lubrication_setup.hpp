@@ -19,7 +19,4 @@ Lubrication make_lubrication(const DemSetup& setup, const std::vector<Shape>& sh
 // dt c/m exceeds 1 for some body.
 void check_lubrication_step(const DemSetup& setup, double dt);
 
-// The neighbour skin both the contacts' and the correction's lists use, m.
-double dem_neighbor_skin(const DemSetup& setup);
-
 }  // namespace lbdem
