@@ -512,7 +512,7 @@ UpdateStats BodyField<T>::update(std::span<const BodyState> states, UpdateMode m
     if (mode == UpdateMode::incremental) remove(static_cast<std::int32_t>(slot), stats);
     slots_.erase(t.id);
     t = Tracked{};
-    field_.bodies[slot] = PorousBody<T>{};
+    field_.bodies.set(slot, PorousBody<T>{});
   }
   if (mode == UpdateMode::full) {
     std::fill(field_.d.begin(), field_.d.end(), 1.0f);
@@ -532,7 +532,7 @@ UpdateStats BodyField<T>::update(std::span<const BodyState> states, UpdateMode m
       slot = static_cast<std::int32_t>(free - tracked_.begin());
       if (free == tracked_.end()) {
         tracked_.emplace_back();
-        field_.bodies.emplace_back();
+        field_.bodies.push_back(PorousBody<T>{});
       }
       slots_[s.id] = slot;
     }
@@ -560,12 +560,15 @@ UpdateStats BodyField<T>::update(std::span<const BodyState> states, UpdateMode m
     t.band = std::move(band);
     stats.band += t.band.size();
 
-    PorousBody<T>& k = field_.bodies[static_cast<std::size_t>(slot)];
+    // The centre is wrapped again in T: t.x < L may round up to L.
+    PorousBody<T> k;
     for (int a = 0; a < 3; ++a) {
-      k.centre[a] = T(t.x[a]);
+      const T c = T(t.x[a]);
+      k.centre[a] = sub_.periodic[a] ? wrap_periodic(c, T(sub_.box.global[a])) : c;
       k.velocity[a] = T(s.v[a] / frame_.units.velocity());
       k.omega[a] = T(s.w[a] * frame_.units.dt);
     }
+    field_.bodies.set(static_cast<std::size_t>(slot), k);
   }
   combine(order);
   field_.active = !slots_.empty();

@@ -62,7 +62,7 @@ template <class T, class Populations>
 LinkLoad link_load(const Subdomain& sub, const PorousField<T>& field, std::int32_t k,
                    CellIndex cell, const Populations& f) {
   const auto l = sub.box.coords(cell);
-  const PorousBody<T>& b = field.bodies[static_cast<std::size_t>(k)];
+  const PorousBody<T> b = field.bodies[static_cast<std::size_t>(k)];
   const std::array<double, 3> r = lever_arm(sub, b, l);
   const std::array<double, 3> u = solid_velocity(b, r);
   LinkLoad out;

@@ -6,7 +6,6 @@
 #include <new>
 #include <stdexcept>
 
-#include "coupler_lib/geometry/periodic.hpp"
 #include "fluid_app/boundary/boundary_links.hpp"
 #include "fluid_app/kernel/aa_kernel.hpp"
 #include "fluid_app/lattice/d3q19.hpp"
@@ -157,10 +156,9 @@ class FluidSolverImpl {
         (force[0] != 0 || force[1] != 0 || force[2] != 0) ? Forcing::uniform : Forcing::none;
     if (porous_field.active) {
       mode = Forcing::porous;
-      fill_table();
       a.d = porous_field.d.data();
       a.body = porous_field.body.data();
-      for (int m = 0; m < 9; ++m) a.table[m] = table[m].data();
+      for (int m = 0; m < 9; ++m) a.table[m] = porous_field.bodies.column(m);
       exchange.assign(std::size_t(kPenaltyTerms) * (porous_field.bodies.size() + 1), 0.0);
       a.exchange = exchange.data();
       for (int k = 0; k < 3; ++k) {
@@ -187,21 +185,6 @@ class FluidSolverImpl {
     if (porous_field.active) store_exchange();
     for (int k = 0; k < 3; ++k) impulse[k] += force[k] * double(nodes);
     if (sum) reduce_flow(sums);
-  }
-
-  // The body table as 9 flat arrays with a zero entry 0 (body -1); centres wrapped into
-  // [0, L) on periodic axes, which the kernel's minimum image relies on.
-  void fill_table() {
-    const auto& bodies = porous_field.bodies;
-    for (auto& t : table) t.assign(bodies.size() + 1, T(0));
-    for (std::size_t k = 0; k < bodies.size(); ++k) {
-      for (int ax = 0; ax < 3; ++ax) {
-        const T c = bodies[k].centre[ax];
-        table[ax][k + 1] = dec.periodic(ax) ? wrap_periodic(c, T(box.global[ax])) : c;
-        table[3 + ax][k + 1] = bodies[k].velocity[ax];
-        table[6 + ax][k + 1] = bodies[k].omega[ax];
-      }
-    }
   }
 
   // The kernel's flat sums (entry 0: body -1) as one PenaltyExchange per body.
@@ -253,7 +236,6 @@ class FluidSolverImpl {
   bool measure = false;
   MeanFlow mean;
   PorousField<T> porous_field;
-  std::array<std::vector<T>, 9> table;
 };
 
 template <class T>
@@ -325,8 +307,7 @@ std::array<T, 3> FluidSolver<T>::velocity(CellIndex cell) const {
     std::array<T, 3> r;
     for (int k = 0; k < 3; ++k) {
       const bool per = m.dec.periodic(k);
-      r[k] = T(m.box.offset[k] + p[k] - 1) + T(0.5) -
-             (per ? wrap_periodic(b.centre[k], T(m.box.global[k])) : b.centre[k]);
+      r[k] = T(m.box.offset[k] + p[k] - 1) + T(0.5) - b.centre[k];
       if (per) {  // minimum image exactly as the kernel takes it
         const T len = T(m.box.global[k]);
         r[k] -= r[k] > T(0.5) * len ? len : T(0);

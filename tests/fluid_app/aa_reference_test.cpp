@@ -92,7 +92,7 @@ TEST(AaPattern, MatchesReferenceWithPorousBodiesAcrossPeriodicFaces) {
   // a static porous layer (body -1) at z = 5.
   ref.bodies = {{{0.5, 3.0, 3.0}, {0.01, 0.0, -0.02}, {0.0, 0.0, 0.03}},
                 {{5.0, 2.0, 2.0}, {0.0, 0.03, 0.0}, {0.01, 0.0, 0.0}}};
-  pf.bodies = ref.bodies;
+  for (const auto& body : ref.bodies) pf.bodies.push_back(body);
   for (int z = 0; z < 6; ++z)
     for (int y = 0; y < 6; ++y)
       for (int x = 0; x < 8; ++x) {
