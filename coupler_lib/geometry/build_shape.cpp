@@ -59,10 +59,6 @@ ShapeParams scaled_params(const ShapeParams& p, double factor) {
   return q;
 }
 
-bool offset_is_a_parameter(ShapeKind kind) {
-  return kind == ShapeKind::sphere || kind == ShapeKind::cube || kind == ShapeKind::cuboid;
-}
-
 ShapeParams offset_params(const ShapeParams& p, double offset) {
   if (!offset_is_a_parameter(p.kind))
     throw std::logic_error("offset_params: only spheres, cubes and cuboids");
@@ -75,27 +71,6 @@ ShapeParams offset_params(const ShapeParams& p, double offset) {
   if (!(*std::min_element(q.extents.begin(), q.extents.end()) > 0))
     throw ShapeError(no_solid_left(p, offset));
   return q;
-}
-
-SolidGeometry make_solid(const ShapeParams& p) {
-  const Eigen::Vector3d ext(p.extents[0], p.extents[1], p.extents[2]);
-  switch (p.kind) {
-    case ShapeKind::sphere:
-      return SolidGeometry::sphere(p.size / 2);
-    case ShapeKind::cube:
-      return SolidGeometry::cuboid(Eigen::Vector3d::Constant(p.size));
-    case ShapeKind::cuboid:
-      return SolidGeometry::cuboid(ext);
-    case ShapeKind::ellipsoid:
-      return SolidGeometry::ellipsoid(ext);
-    case ShapeKind::stl: {
-      TriangleMesh mesh = read_stl(p.file);
-      check_closed_oriented(mesh, p.file);
-      scale_mesh(mesh, p.scale);
-      return SolidGeometry::mesh(std::move(mesh));
-    }
-  }
-  throw std::logic_error("make_solid: shape kind out of range");
 }
 
 Shape build_shape(const ShapeParams& p, double h) {

@@ -7,24 +7,18 @@
 // (what the fluid sees: the scaled shape centred on its centroid, then its surface moved along
 // its normal by the offset); mass properties and the clump stay the true shape's.
 #include "coupler_lib/geometry/shape.hpp"
+#include "coupler_lib/geometry/shape_kinds.hpp"
 #include "coupler_lib/geometry/shape_params.hpp"
 #include "coupler_lib/geometry/solid_geometry.hpp"
 
 namespace lbdem {
 
-// The solid described by the parameters (reads and checks the STL for kind stl).
-SolidGeometry make_solid(const ShapeParams& params);
-
 // The same shape scaled by `factor` about the origin of its input frame.
 ShapeParams scaled_params(const ShapeParams& params, double factor);
 
-// Whether offset_params gives the moved surface: spheres, cubes and cuboids, whose parallel
-// bodies are shapes of the same kind (for a box moved outward, with sharp edges where the
-// dilation rounds them). Ellipsoids and meshes are eroded or dilated on the fluid's lattice
-// instead (offset_voxels.hpp).
-bool offset_is_a_parameter(ShapeKind kind);
-
-// The same sphere, cube or cuboid with its surface moved inward by `offset` m (outward when
+// The same sphere, cube or cuboid (offset_is_a_parameter, shape_kinds.hpp; for a box moved
+// outward the parallel body would round the edges this one keeps sharp) with its surface moved
+// inward by `offset` m (outward when
 // negative): radius or edges reduced by offset or 2 offset.
 ShapeParams offset_params(const ShapeParams& params, double offset);
 

@@ -2,33 +2,12 @@
 
 #include <stdexcept>
 
-#include "coupler_lib/geometry/build_shape.hpp"
-#include "coupler_lib/geometry/mesh_primitives.hpp"
+#include "coupler_lib/geometry/shape_kinds.hpp"
 
 namespace lbdem {
 
 TriangleMesh display_surface(const ShapeParams& params, const Eigen::Vector3d& centroid) {
-  // Refinement of the round shapes: 320 triangles keep a sphere visibly round in a picture
-  // while a body costs 162 vertices per snapshot.
-  constexpr int kLevels = 2;
-  const Eigen::Vector3d e(params.extents[0], params.extents[1], params.extents[2]);
-  TriangleMesh m;
-  switch (params.kind) {
-    case ShapeKind::sphere:
-      m = icosphere_mesh(e.x(), kLevels);
-      break;
-    case ShapeKind::ellipsoid:
-      m = icosphere_mesh(1.0, kLevels);
-      for (auto& v : m.vertices) v = v.cwiseProduct(e);
-      break;
-    case ShapeKind::cube:
-    case ShapeKind::cuboid:
-      m = box_mesh(e);
-      break;
-    case ShapeKind::stl:
-      m = make_solid(params).triangles();
-      break;
-  }
+  TriangleMesh m = rules_of(params.kind).surface(params);
   for (auto& v : m.vertices) v -= centroid;
   return m;
 }

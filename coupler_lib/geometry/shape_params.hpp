@@ -40,7 +40,7 @@ struct ShapeParams {
   // ellipsoid axis (2 a_max); for stl, the longest scaled bounding-box edge (the file is
   // read and its bounds taken while parsing).
   double size = 0;
-  // m: cube/cuboid edges, sphere/ellipsoid semi-axes (extents_are_semi_axes), stl scaled
+  // m: cube/cuboid edges, sphere/ellipsoid semi-axes (extents_are_semi_axes, shape_kinds.hpp), stl scaled
   // bounding-box edges
   std::array<double, 3> extents{0, 0, 0};
   std::string file;       // stl: absolute path
@@ -56,10 +56,5 @@ struct ShapeParams {
   ClumpParams clump;
   std::string where;  // "scene.yaml:12: shapes[0]", for errors found after parsing
 };
-
-// Whether ShapeParams::extents holds semi-axes (round shapes) rather than edges.
-inline bool extents_are_semi_axes(ShapeKind kind) {
-  return kind == ShapeKind::sphere || kind == ShapeKind::ellipsoid;
-}
 
 }  // namespace lbdem

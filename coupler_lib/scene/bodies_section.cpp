@@ -8,26 +8,6 @@
 
 namespace lbdem {
 
-std::optional<ShapeExtent> analytic_extent(const ShapeParams& shape) {
-  const double a = shape.size;
-  const auto& e = shape.extents;
-  switch (shape.kind) {
-    case ShapeKind::sphere:
-      return ShapeExtent{0.5 * a, std::numbers::pi * a * a * a / 6.0};
-    case ShapeKind::cube:
-      return ShapeExtent{0.5 * std::sqrt(3.0) * a, a * a * a};
-    case ShapeKind::cuboid:
-      return ShapeExtent{0.5 * std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]),
-                         e[0] * e[1] * e[2]};
-    case ShapeKind::ellipsoid:
-      return ShapeExtent{std::max({e[0], e[1], e[2]}),
-                         4.0 / 3.0 * std::numbers::pi * e[0] * e[1] * e[2]};
-    case ShapeKind::stl:
-      return std::nullopt;  // known only once the mesh is read
-  }
-  return std::nullopt;
-}
-
 namespace {
 
 // SplitMix64: a fully specified generator, so a seed gives the same bodies everywhere.

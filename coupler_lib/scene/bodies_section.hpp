@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "coupler_lib/geometry/shape_kinds.hpp"
 #include "coupler_lib/scene/choices.hpp"
 #include "coupler_lib/scene/shapes_section.hpp"
 #include "coupler_lib/scene/yaml_reader.hpp"
@@ -25,13 +26,6 @@ struct BodyParams {
   std::array<double, 3> angular_velocity{};       // rad/s
   double density = 0;                             // kg/m^3
 };
-
-// Bounding radius and volume of an analytic shape kind, known without building the shape.
-struct ShapeExtent {
-  double bounding_radius = 0;  // m, circumscribed sphere about the centroid
-  double volume = 0;           // m^3
-};
-std::optional<ShapeExtent> analytic_extent(const ShapeParams& shape);
 
 // What a generator entry asks for.
 struct BodyGenerator {
