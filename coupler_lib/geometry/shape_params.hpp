@@ -40,8 +40,8 @@ struct ShapeParams {
   // ellipsoid axis (2 a_max); for stl, the longest scaled bounding-box edge (the file is
   // read and its bounds taken while parsing).
   double size = 0;
-  // m: cube/cuboid edges, sphere/ellipsoid semi-axes (extents_are_semi_axes, shape_kinds.hpp), stl scaled
-  // bounding-box edges
+  // m: cube/cuboid edges, sphere/ellipsoid semi-axes (extents_are_semi_axes, shape_kinds.hpp), stl
+  // scaled bounding-box edges
   std::array<double, 3> extents{0, 0, 0};
   std::string file;       // stl: absolute path
   double scale = 1;       // stl: vertex coordinates are multiplied by this
