@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Record/replay through the real entry points (ranks: fluid 2 : DEM 1 recorded and replayed;
 # then fluid 3 : DEM 2):
-#   1. a coupled run records every packet (coupling.record);
+#   1. a coupled run records every packet (coupling.record: one part per DEM rank);
 #   2. `fluid_app --replay` alone reproduces the recorded loads bit for bit;
 #   3. `dem_app --replay` alone reproduces the recorded states bit for bit;
 #   4. a recording with one bit flipped in one load is detected, naming the step.
@@ -31,10 +31,15 @@ grep -q "loads of all 40 steps match the recording bit for bit" fluid.log \
 grep -q "states of all 40 steps match the recording bit for bit" dem.log \
   || { cat dem.log; echo "FAIL: DEM replay did not confirm a bit-for-bit match"; exit 1; }
 
+# One part per DEM rank, nothing else under the recording's name.
+parts=$(ls rec*.h5 | tr '\n' ' ')
+expected=$(for ((r = 0; r < nd; r++)); do printf 'rec.rank%d.h5 ' "$r"; done)
+[ "$parts" = "$expected" ] || { echo "FAIL: recording files '$parts', expected '$expected'"; exit 1; }
+
 # Flip the lowest bit of one recorded force component: the fluid replay must notice.
 /usr/bin/python3 - <<'PY'
 import h5py, numpy as np
-with h5py.File("rec.h5", "r+") as f:
+with h5py.File("rec.rank0.h5", "r+") as f:
     loads = f["loads"][...]
     k = len(loads) // 2
     fz = np.array([loads["f"][k][2]], dtype=np.float64)
