@@ -139,11 +139,12 @@ CheckpointWork measured_work(const FluidSolver<T>& solver, double covered_cell_w
 // An in-run rebalancing step (fluid.rebalance_interval; both programs are at step `step`, the
 // states of which `states` holds and the bodies are embedded). Above fluid.rebalance_above the
 // lattice is cut anew by the measured work, exactly as a restart from a checkpoint of this step
-// would cut it (restart_layout): the populations move to the new blocks, the bodies are
-// embedded anew from this step's states (the DEM sends them again when the boxes changed), and
-// the covered momentum of the step goes whole to the lowest rank that now holds the body. The
-// run then continues as that restart would, bit for bit. Either way the boxes are announced to
-// the DEM side, which routes by them.
+// would cut it (restart_layout), unless the new blocks would hold no lower imbalance
+// (imbalance_of_cuts, counted before anything moves): the populations move to the new blocks, the
+// bodies are embedded anew from this step's states (the DEM sends them again when the boxes
+// changed), and the covered momentum of the step goes whole to the lowest rank that now holds the
+// body. The run then continues as that restart would, bit for bit. Either way the boxes are
+// announced to the DEM side, which routes by them.
 template <class T, class Embed>
 void rebalance(AppContext& ctx, FluidRun<T>& run, FluidCoupler& coupler, StateFeed& feed,
                const std::vector<BodyState>& states, std::int64_t step, const Embed& embed,
@@ -152,12 +153,21 @@ void rebalance(AppContext& ctx, FluidRun<T>& run, FluidCoupler& coupler, StateFe
   CheckpointWork work = measured_work(run.solver(), fluid.covered_cell_weight);
   work.layout = run.layout_weights();
   const LayoutChoice choice = restart_layout(fluid, work, ctx.size);
-  if (choice.same_as_checkpoint) {
+  const PorousField<T>& field = run.solver().porous();
+  const double cut = choice.same_as_checkpoint
+                         ? work.imbalance
+                         : imbalance_of_cuts(run.solver().box(),
+                                             field.active ? std::span<const float>(field.d)
+                                                          : std::span<const float>(),
+                                             fluid.covered_cell_weight, choice.weights,
+                                             run.solver().decomposition().dims(), ctx.side_comm);
+  if (choice.same_as_checkpoint || cut >= work.imbalance) {
     if (ctx.rank == 0)
-      ctx.log->info(
-          "step {}: load imbalance of the weighted work {:.3f}, at most "
-          "fluid.rebalance_above = {}: cuts kept",
-          step, work.imbalance, fluid.rebalance_above);
+      ctx.log->info("step {}: load imbalance of the weighted work {:.3f}{}: cuts kept", step,
+                    work.imbalance,
+                    choice.same_as_checkpoint
+                        ? fmt::format(", at most fluid.rebalance_above = {}", fluid.rebalance_above)
+                        : fmt::format(" (new cuts by the measured work would give {:.3f})", cut));
     coupler.announce_layout(geometry_of(ctx.scene, run.solver().box(), {}).mine);
     return;
   }
