@@ -21,7 +21,8 @@ DemCoupler::DemCoupler(const World& world, const Scene& scene, const std::string
   info.dem_ranks = world.size();
   info.layout = layout_;
   if (!scene.coupling.record.empty())
-    recorder_ = std::make_unique<Recorder>(side_, scene.coupling.record, info);
+    recorder_ =
+        std::make_unique<JournalWriter>(journal_part(scene.coupling.record, world.rank()), info);
   if (!journal.empty()) {
     // The journal outlives edits of time.end and outputs: it is identified by the scene
     // fingerprint, which a restart checks, instead of the bytes of the file.
@@ -55,7 +56,6 @@ void DemCoupler::send_states(std::int64_t step, std::span<const BodyState> owned
   const ScopedCouplingTimer timer(times_);
   sent_.assign(owned.begin(), owned.end());
   std::unordered_set<std::int64_t> ids;
-  std::vector<std::vector<BodyState>> buckets(layout_.boxes.size());
   for (BodyState& s : sent_) {
     s.version = kProtocolVersion;
     s.step = step;
@@ -66,16 +66,39 @@ void DemCoupler::send_states(std::int64_t step, std::span<const BodyState> owned
       throw std::runtime_error("body " + std::to_string(s.id) + " has shape index " +
                                std::to_string(s.shape) + ", but the fluid side knows " +
                                std::to_string(layout_.shape_radius.size()) + " shapes");
-    // Routed by the announced (or recorded) layout; a replay checks `sent_` itself.
-    for (int r : touched_ranks(layout_, s.x, layout_.reach(s.shape)))
-      buckets[static_cast<size_t>(r)].push_back(s);
   }
+  // Routed by the announced (or recorded) layout; a replay checks `sent_` itself.
+  const auto buckets = route(sent_);
   count_traffic(times_, buckets);
   transport_->send_states(step, sent_, buckets);
   if (recorder_) recorder_->states(step, sent_);
   if (journal_) journal_->states(step, sent_);
   step_ = step;
   answered_ = false;
+}
+
+std::vector<std::vector<BodyState>> DemCoupler::route(std::span<const BodyState> states) const {
+  std::vector<std::vector<BodyState>> buckets(layout_.boxes.size());
+  for (const BodyState& s : states)
+    for (int r : touched_ranks(layout_, s.x, layout_.reach(s.shape)))
+      buckets[static_cast<size_t>(r)].push_back(s);
+  return buckets;
+}
+
+bool DemCoupler::follow_layout() {
+  const ScopedCouplingTimer timer(times_);
+  FluidLayout next = transport_->receive_layout();
+  try {
+    validate_layout(next);
+  } catch (const std::invalid_argument& e) {
+    throw SideError(std::string("fluid decomposition received by the DEM side: ") + e.what());
+  }
+  if (pack_layout(next) == pack_layout(layout_)) return false;
+  layout_ = std::move(next);
+  const auto buckets = route(sent_);
+  count_traffic(times_, buckets);
+  transport_->send_states(step_, sent_, buckets);
+  return true;
 }
 
 std::vector<BodyLoad> DemCoupler::receive_loads(std::int64_t step) {

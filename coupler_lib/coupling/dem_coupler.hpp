@@ -2,7 +2,8 @@
 // The DEM program's end of the coupling.
 //
 //   DemCoupler coupler(world, ctx.scene);             // live (after connect()); records
-//                                                     // when coupling.record is set
+//                                                     // when coupling.record is set (each
+//                                                     // rank its own part, recording.hpp)
 //   DemCoupler coupler(ctx, ctx.cli.replay);          // alone, fed by a recording
 //   for each coupling step:
 //     coupler.send_states(step, owned);               // every body this rank owns now
@@ -21,7 +22,6 @@
 #include "coupler_lib/coupling/coupling_times.hpp"
 #include "coupler_lib/coupling/journal.hpp"
 #include "coupler_lib/coupling/packets.hpp"
-#include "coupler_lib/coupling/recorder.hpp"
 #include "coupler_lib/coupling/routing.hpp"
 #include "coupler_lib/coupling/side_info.hpp"
 #include "coupler_lib/coupling/transport.hpp"
@@ -57,6 +57,13 @@ class DemCoupler {
   // Writes this rank's part of the journal to disk and returns its path (empty without one).
   std::string flush_journal();
 
+  // Live, at an in-run rebalancing step of the fluid (Schedule::rebalance_at), after the
+  // step's send_states; collective over both programs. Takes the layout the fluid announced
+  // (FluidCoupler::announce_layout); when it changed, the states of that send_states go again,
+  // routed by it, for the fluid's new blocks to embed (not to the recording or the journal,
+  // which hold each step once). Returns whether it changed.
+  bool follow_layout();
+
   // The decomposition the fluid side announced (or the recorded one in a replay).
   const FluidLayout& fluid_layout() const { return layout_; }
   // Time spent in this coupler so far, and how much of it was waiting for the fluid.
@@ -64,10 +71,13 @@ class DemCoupler {
 
  private:
   DemCoupler(MPI_Comm side, std::unique_ptr<DemTransport> transport);
+  // The copies of `states` for each fluid rank whose box a state reaches (layout_).
+  std::vector<std::vector<BodyState>> route(std::span<const BodyState> states) const;
 
   std::unique_ptr<DemTransport> transport_;
   CouplingTimes times_;
-  std::unique_ptr<Recorder> recorder_;
+  // coupling.record: this rank's part of the recording, written as the journal is (journal.hpp)
+  std::unique_ptr<JournalWriter> recorder_;
   std::unique_ptr<JournalWriter> journal_;
   MPI_Comm side_;
   FluidLayout layout_;

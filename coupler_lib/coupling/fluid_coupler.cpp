@@ -26,18 +26,22 @@ FluidCoupler::FluidCoupler(const SideInfo& ctx, const std::string& recording,
 
 FluidCoupler::FluidCoupler(MPI_Comm side, std::unique_ptr<FluidTransport> transport,
                            const FluidGeometry& g)
-    : transport_(std::move(transport)) {
-  int size = 1;
+    : transport_(std::move(transport)), side_(side) {
   MPI_Comm_rank(side, &rank_);
-  MPI_Comm_size(side, &size);
-  double mine[6] = {g.mine.lo[0], g.mine.lo[1], g.mine.lo[2],
-                    g.mine.hi[0], g.mine.hi[1], g.mine.hi[2]};
-  std::vector<double> all(6 * static_cast<size_t>(size));
-  MPI_Allgather(mine, 6, MPI_DOUBLE, all.data(), 6, MPI_DOUBLE, side);
   layout_.domain = g.domain;
   layout_.periodic = g.periodic;
   layout_.shape_radius = g.shape_radius;
   layout_.margin = g.margin;
+  gather_boxes(g.mine);
+  transport_->announce(layout_);
+}
+
+void FluidCoupler::gather_boxes(const Box& mine) {
+  int size = 1;
+  MPI_Comm_size(side_, &size);
+  const double box[6] = {mine.lo[0], mine.lo[1], mine.lo[2], mine.hi[0], mine.hi[1], mine.hi[2]};
+  std::vector<double> all(6 * static_cast<size_t>(size));
+  MPI_Allgather(box, 6, MPI_DOUBLE, all.data(), 6, MPI_DOUBLE, side_);
   layout_.boxes.resize(static_cast<size_t>(size));
   for (size_t r = 0; r < layout_.boxes.size(); ++r)
     for (int d = 0; d < 3; ++d) {
@@ -49,7 +53,14 @@ FluidCoupler::FluidCoupler(MPI_Comm side, std::unique_ptr<FluidTransport> transp
   } catch (const std::invalid_argument& e) {
     throw SideError(std::string("fluid decomposition given to the coupler: ") + e.what());
   }
+}
+
+bool FluidCoupler::announce_layout(const Box& mine) {
+  const ScopedCouplingTimer timer(times_);
+  const std::vector<double> before = pack_layout(layout_);
+  gather_boxes(mine);
   transport_->announce(layout_);
+  return pack_layout(layout_) != before;
 }
 
 FluidCoupler::~FluidCoupler() = default;

@@ -55,6 +55,13 @@ class FluidCoupler {
   std::vector<BodyState> receive_states(std::int64_t step);
   void send_loads(std::int64_t step, std::span<const BodyLoad> partials);
 
+  // At an in-run rebalancing step (live or replayed; collective over both programs live):
+  // this rank's subdomain from now on, new or unchanged, and the layout of all of them goes to
+  // the DEM side (DemCoupler::follow_layout). Returns whether any rank's box changed: the DEM
+  // then sends the states of its last step again, routed by the new boxes, and the next
+  // receive_states (of that same step) takes them.
+  bool announce_layout(const Box& mine);
+
   const FluidLayout& layout() const { return layout_; }  // every fluid rank's box
   int rank() const { return rank_; }
   // Time spent in this coupler so far, and how much of it was waiting for the DEM.
@@ -64,8 +71,11 @@ class FluidCoupler {
   FluidCoupler(MPI_Comm side, std::unique_ptr<FluidTransport> transport,
                const FluidGeometry& geometry);
 
+  void gather_boxes(const Box& mine);  // every rank's box into layout_, validated
+
   std::unique_ptr<FluidTransport> transport_;
   CouplingTimes times_;
+  MPI_Comm side_;
   int rank_ = 0;
   FluidLayout layout_;
   std::int64_t step_ = -1;                        // step of the last receive_states

@@ -1,11 +1,14 @@
 #pragma once
-// A recording: every packet that crossed between the programs, in one HDF5 file.
+// A recording: the packets that crossed between the programs, in HDF5 files of this layout.
+// coupling.record (`run.h5`) and the checkpoint journal write one file per DEM rank
+// (`run.rank<r>.h5`, journal_part in journal.hpp), each with the packets of that rank's bodies,
+// so nothing per step passes through one rank; a replay merges the parts by body id.
 //
-// Layout of the file (all written by one process; h5dump shows it as it is):
+// Layout of a file (written by one process; h5dump shows it as it is):
 //   attributes  protocol_version, scene_hash, scene_file, fluid_ranks, dem_ranks
-//   fluid_layout      the fluid decomposition as pack_layout() writes it
-//   states            every BodyState the DEM side sent, per step sorted by body id
-//   loads             every reduced BodyLoad the DEM side received, per step sorted by id
+//   fluid_layout      the fluid decomposition at the start, as pack_layout() writes it
+//   states            every BodyState the DEM rank sent, per step sorted by body id
+//   loads             every reduced BodyLoad the DEM rank received, per step sorted by id
 //   state_steps, load_steps   (step, offset, count) rows indexing the two tables
 // The tables grow in chunks, so a run of any length is recorded without holding it in memory.
 #include <cstdint>

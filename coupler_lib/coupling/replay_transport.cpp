@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <stdexcept>
 
 #include "coupler_lib/coupling/compare.hpp"
+#include "coupler_lib/coupling/journal.hpp"
 #include "coupler_lib/coupling/reduce.hpp"
 #include "coupler_lib/errors.hpp"
 #include "coupler_lib/output/gather.hpp"
@@ -36,13 +38,24 @@ ReplaySource::ReplaySource(const SideInfo& ctx, const std::string& path)
   std::vector<char> scene_file;
   std::vector<std::uint64_t> header(4);
   if (rank_ == 0) {
-    reader_ = std::make_unique<RecordingReader>(path);
-    const RecordingInfo& in = reader_->info();
-    if (in.scene_hash != ctx.scene_hash)
-      throw std::runtime_error(path + " was recorded from scene '" + in.scene_file + "' (hash " +
-                               hex(in.scene_hash) + "), but this run reads '" + ctx.scene_file +
-                               "' (hash " + hex(ctx.scene_hash) +
-                               "); replay with the scene file of the recorded run");
+    // Part 0 names the recorded DEM rank count, and with it the other parts.
+    for (int r = 0; r == 0 || r < parts_.front()->info().dem_ranks; ++r) {
+      const std::string part = journal_part(path, r);
+      if (!std::filesystem::exists(part))
+        throw std::runtime_error("recording " + path + ": part " + part + " is missing" +
+                                 (r == 0 ? std::string()
+                                         : " (recorded by " +
+                                               std::to_string(parts_.front()->info().dem_ranks) +
+                                               " DEM ranks, one part each)"));
+      parts_.push_back(std::make_unique<RecordingReader>(part));
+      const RecordingInfo& in = parts_.back()->info();
+      if (in.scene_hash != ctx.scene_hash)
+        throw std::runtime_error(part + " was recorded from scene '" + in.scene_file + "' (hash " +
+                                 hex(in.scene_hash) + "), but this run reads '" + ctx.scene_file +
+                                 "' (hash " + hex(ctx.scene_hash) +
+                                 "); replay with the scene file of the recorded run");
+    }
+    const RecordingInfo& in = parts_.front()->info();
     header = {in.protocol, in.scene_hash, static_cast<std::uint64_t>(in.fluid_ranks),
               static_cast<std::uint64_t>(in.dem_ranks)};
     layout = pack_layout(in.layout);
@@ -64,12 +77,40 @@ ReplaySource::ReplaySource(const SideInfo& ctx, const std::string& path)
 
 ReplaySource::~ReplaySource() = default;
 
+namespace {
+
+// The parts' packets of one step in one list by id, as the recorded run's DEM ranks held them.
+template <class Packet, class Read>
+std::vector<Packet> merged(const std::vector<std::unique_ptr<RecordingReader>>& parts, Read read) {
+  std::vector<Packet> all;
+  for (const auto& part : parts) {
+    const std::vector<Packet> mine = read(*part);
+    all.insert(all.end(), mine.begin(), mine.end());
+  }
+  std::sort(all.begin(), all.end(), [](const Packet& a, const Packet& b) { return a.id < b.id; });
+  return all;
+}
+
+}  // namespace
+
+std::vector<BodyState> ReplaySource::states(std::int64_t step) const {
+  return merged<BodyState>(parts_, [step](const RecordingReader& r) { return r.states(step); });
+}
+
+std::vector<BodyLoad> ReplaySource::loads(std::int64_t step) const {
+  return merged<BodyLoad>(parts_, [step](const RecordingReader& r) { return r.loads(step); });
+}
+
 ReplayFluidTransport::ReplayFluidTransport(const SideInfo& ctx, const std::string& path)
     : source_(ctx, path) {}
 
 void ReplayFluidTransport::announce(const FluidLayout& layout) {
   layout_ = layout;
-  if (source_.rank() == 0 && pack_layout(layout) != pack_layout(source_.info().layout))
+  // Later announces are in-run rebalancing, which the replayed fluid repeats at the recorded
+  // run's steps: the recording holds the layout of the start only.
+  const bool first = !announced_;
+  announced_ = true;
+  if (first && source_.rank() == 0 && pack_layout(layout) != pack_layout(source_.info().layout))
     source_.log().warn(
         "this fluid decomposition ({} ranks) differs from the recorded one ({} ranks): "
         "loads will not match the recording bit for bit",
@@ -77,7 +118,7 @@ void ReplayFluidTransport::announce(const FluidLayout& layout) {
 }
 
 std::vector<std::vector<BodyState>> ReplayFluidTransport::receive_states(std::int64_t step) {
-  if (source_.rank() == 0) all_ = source_.reader()->states(step);
+  if (source_.rank() == 0) all_ = source_.states(step);
   broadcast(all_, 0, source_.side());
   // Route exactly as the DEM side does (dem_coupler.cpp).
   std::vector<BodyState> mine;
@@ -94,7 +135,7 @@ void ReplayFluidTransport::send_loads(std::int64_t step,
   const auto per_fluid_rank = gather_by_rank<BodyLoad>(mine, source_.side());
   if (source_.rank() != 0) return;
   const std::vector<BodyLoad> reduced = reduce_loads(all_, per_fluid_rank, step);
-  const std::vector<BodyLoad> recorded = source_.reader()->loads(step);
+  const std::vector<BodyLoad> recorded = source_.loads(step);
   if (auto diff = first_mismatch(step, recorded, reduced))
     throw std::runtime_error("fluid replay of " + source_.path() +
                              ": the loads differ from the recording at " + *diff);
@@ -120,7 +161,7 @@ void ReplayDemTransport::send_states(std::int64_t step, std::span<const BodyStat
   if (source_.rank() != 0) return;
   std::sort(all.begin(), all.end(),
             [](const BodyState& a, const BodyState& b) { return a.id < b.id; });
-  const std::vector<BodyState> recorded = source_.reader()->states(step);
+  const std::vector<BodyState> recorded = source_.states(step);
   if (auto diff = first_mismatch(step, recorded, all))
     throw std::runtime_error("DEM replay of " + source_.path() +
                              ": the states differ from the recording at " + *diff);
@@ -128,7 +169,7 @@ void ReplayDemTransport::send_states(std::int64_t step, std::span<const BodyStat
 
 std::vector<std::vector<BodyLoad>> ReplayDemTransport::receive_loads(std::int64_t step) {
   std::vector<BodyLoad> all;
-  if (source_.rank() == 0) all = source_.reader()->loads(step);
+  if (source_.rank() == 0) all = source_.loads(step);
   broadcast(all, 0, source_.side());
   return {loads_of(owned_, all, source_.path(), step)};
 }

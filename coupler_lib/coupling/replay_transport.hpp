@@ -23,11 +23,12 @@
 
 namespace lbdem {
 
-// The recording, opened on rank 0 of this program, with its header on every rank.
+// The recording, its parts (one per recorded DEM rank, recording.hpp) opened on rank 0 of this
+// program, with its header on every rank.
 class ReplaySource {
  public:
-  // Collective over ctx.side_comm. Rank 0 throws when the file is missing, not a recording,
-  // or was recorded from another scene.
+  // Collective over ctx.side_comm. Rank 0 throws when a part is missing, not a recording, or
+  // was recorded from another scene.
   ReplaySource(const SideInfo& ctx, const std::string& path);
   ~ReplaySource();
   const RecordingInfo& info() const { return info_; }
@@ -35,7 +36,9 @@ class ReplaySource {
   MPI_Comm side() const { return side_; }
   int rank() const { return rank_; }
   int size() const { return size_; }
-  const RecordingReader* reader() const { return reader_.get(); }  // rank 0 only
+  // Rank 0 only: every recorded state (reduced load) of `step`, merged from the parts, by id.
+  std::vector<BodyState> states(std::int64_t step) const;
+  std::vector<BodyLoad> loads(std::int64_t step) const;
   spdlog::logger& log() const { return *log_; }
 
  private:
@@ -43,7 +46,7 @@ class ReplaySource {
   MPI_Comm side_;
   int rank_ = 0, size_ = 1;
   RecordingInfo info_;
-  std::unique_ptr<RecordingReader> reader_;
+  std::vector<std::unique_ptr<RecordingReader>> parts_;  // rank 0 only, by recorded DEM rank
   std::shared_ptr<spdlog::logger> log_;
 };
 
@@ -59,6 +62,7 @@ class ReplayFluidTransport : public FluidTransport {
  private:
   ReplaySource source_;
   FluidLayout layout_;
+  bool announced_ = false;      // the first announce compares the layout with the recorded one
   std::vector<BodyState> all_;  // every recorded state of the current step, by id
 };
 

@@ -64,6 +64,8 @@ Schedule make_schedule(const Scene& scene, double dt_fluid, double dt_dem) {
   s.exchange_interval = scene.coupling.exchange_interval;
   s.output_interval = cadence(scene.coupling.output_interval, s.dt, s.exchange_interval);
   s.checkpoint_interval = cadence(scene.coupling.checkpoint_interval, s.dt, s.exchange_interval);
+  if (fluid && dem)
+    s.rebalance_interval = cadence(scene.fluid->rebalance_interval, s.dt, s.exchange_interval);
   return s;
 }
 

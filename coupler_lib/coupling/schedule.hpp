@@ -1,6 +1,6 @@
 #pragma once
 // The time schedule of a run, in one place: DEM substeps per fluid step, number of steps,
-// and which steps exchange packets, write output and write checkpoints.
+// and which steps exchange packets, write output, write checkpoints and rebalance the fluid.
 //
 // Substeps (paper, section "OpenLB-LAMMPS coupling"): the DEM advances n_DEM substeps of
 // dt_DEM per fluid step of dt_LBM with the hydrodynamic load held constant. The paper takes
@@ -26,6 +26,7 @@ struct Schedule {
   int exchange_interval = 1;             // outer steps between packet exchanges
   std::int64_t output_interval = 0;      // outer steps between outputs (0: none)
   std::int64_t checkpoint_interval = 0;  // outer steps between checkpoints (0: none)
+  std::int64_t rebalance_interval = 0;   // outer steps between in-run rebalancing checks (0: none)
 
   // `step` counts completed outer steps (1 after the first step).
   bool exchange_at(std::int64_t step) const { return step % exchange_interval == 0; }
@@ -34,6 +35,12 @@ struct Schedule {
   }
   bool checkpoint_at(std::int64_t step) const {
     return checkpoint_interval > 0 && step % checkpoint_interval == 0;
+  }
+  // Both programs meet here: the fluid measures its work and, above fluid.rebalance_above,
+  // cuts its lattice anew and announces the new boxes; the DEM routes by them from this step's
+  // states on (docs/scaling.md, "Rebalancing during a run").
+  bool rebalance_at(std::int64_t step) const {
+    return rebalance_interval > 0 && step % rebalance_interval == 0;
   }
 };
 

@@ -30,7 +30,7 @@ int stop_signal() {
 bool agreement_at(const Scene& scene, const Schedule& schedule, std::int64_t step) {
   const long interval = scene.fluid ? scene.fluid->output.stability.interval : 0;
   return (interval > 0 && step % interval == 0) || schedule.checkpoint_at(step) ||
-         step == schedule.steps;
+         schedule.rebalance_at(step) || step == schedule.steps;
 }
 
 int agree_flags(int mine, const World& world, std::int64_t step) {

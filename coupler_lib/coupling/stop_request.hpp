@@ -26,10 +26,12 @@ enum ExchangeFlag : int {
 
 // The exchange steps at which both programs agree (stop requests, the fluid's and the bodies'
 // watches): every fluid.stability.interval steps (the fluid watch's own cadence), at every
-// checkpoint step and at the last step. Both programs compute it from the same scene and
-// schedule. Agreeing at every step cost a reduction over both programs and a gather of every
-// body state per step (+50 % wall time on configs/bench/cubes64_c100_particle_dt.yaml); a stop
-// signal now acts within one interval (100 steps by default).
+// checkpoint step, at every in-run rebalancing step (an overlapped fluid needs that step's
+// states to place the bodies on its new blocks) and at the last step. Both programs compute it from
+// the same scene and schedule. Agreeing at every step cost a reduction over both programs and a
+// gather of every body state per step (+50 % wall time on
+// configs/bench/cubes64_c100_particle_dt.yaml); a stop signal now acts within one interval (100
+// steps by default).
 bool agreement_at(const Scene& scene, const Schedule& schedule, std::int64_t step);
 
 // Collective over MPI_COMM_WORLD: the bitwise or of `mine` over every rank of both programs,

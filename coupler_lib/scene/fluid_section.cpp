@@ -179,12 +179,19 @@ const MappingSchema& fluid_schema() {
            .or_default(10.0)
            .within(Bounds::at_least(1.0)),
        key::number("rebalance_above",
-                   "for decomposition: balanced, at a restart: the load imbalance (max / mean of "
-                   "the weighted work) measured at the checkpoint above which the lattice is cut "
-                   "anew by the work measured there; at or below it the checkpoint's cuts are "
-                   "kept (docs/scaling.md)")
+                   "for decomposition: balanced, at a restart or an in-run check "
+                   "(rebalance_interval): the load imbalance (max / mean of the weighted work) "
+                   "measured there above which the lattice is cut anew by the measured work; at "
+                   "or below it the cuts are kept (docs/scaling.md)")
            .or_default(1.1)
            .within(Bounds::at_least(1.0)),
+       key::number("rebalance_interval",
+                   "for decomposition: balanced in a coupled run: simulated s between checks of "
+                   "the measured load imbalance, each cutting the lattice anew while the run goes "
+                   "on when it is above rebalance_above (docs/scaling.md)")
+           .or_default(0.0)
+           .within(Bounds::non_negative())
+           .in("s"),
        key::section("boundaries", boundaries_schema(), "per-face boundary conditions")
            .absent_means("triply periodic"),
        key::section("output", fluid_output_schema(), "field files and time series; absent: none")
@@ -244,6 +251,11 @@ FluidParams parse_fluid(Section& s) {
   p.decomposition = value_of(kDecompositionWords, s.choice("decomposition"));
   p.covered_cell_weight = s.get<double>("covered_cell_weight");
   p.rebalance_above = s.get<double>("rebalance_above");
+  p.rebalance_interval = s.get<double>("rebalance_interval");
+  if (p.rebalance_interval > 0 && p.decomposition != DecompositionKind::balanced)
+    s.fail("rebalance_interval",
+           "rebalancing during the run needs decomposition: balanced (the regular blocks are "
+           "never cut anew); remove rebalance_interval or set decomposition: balanced");
   {
     auto b = s.section_or_defaults("boundaries");
     for (int f = 0; f < 6; ++f) p.faces[f] = parse_face(b, f);
@@ -260,8 +272,7 @@ FluidParams parse_fluid(Section& s) {
   p.units = UnitConverter::from_tau(p.dx, p.tau, p.viscosity, p.density);
   p.units.char_velocity = p.characteristic_velocity;
   p.units.char_length = p.characteristic_length;
-  if (p.control.interval > 0)
-    p.control.every = steps_between(p.control.interval, p.units.dt);
+  if (p.control.interval > 0) p.control.every = steps_between(p.control.interval, p.units.dt);
   const UnitConverter& u = p.units;
   if (p.tau < UnitLimits{}.min_tau) s.fail("tau", u.check());
   if (p.hydrodynamic_radius == HydrodynamicRadius::calibrated &&

@@ -18,7 +18,8 @@
 //     loads: penalization             # or momentum_exchange (docs/method-loads.md)
 //     decomposition: regular          # or balanced: cuts by the bodies' work (docs/scaling.md)
 //     covered_cell_weight: 10         # work of a covered cell in fluid cells (balanced)
-//     rebalance_above: 1.1            # restart: recut above this measured imbalance (balanced)
+//     rebalance_above: 1.1            # recut above this measured imbalance (balanced)
+//     rebalance_interval: 0           # s between in-run rebalancing checks (0: at restarts only)
 //     boundaries:
 //       x_min: periodic               # periodic faces must be paired
 //       x_max: periodic
@@ -82,7 +83,8 @@ struct FluidParams {
   LoadMethod loads = LoadMethod::penalization;
   DecompositionKind decomposition = DecompositionKind::regular;
   double covered_cell_weight = 10;      // work of a covered cell / a fluid cell (balanced split)
-  double rebalance_above = 1.1;         // restart: recut when the checkpoint's imbalance is above
+  double rebalance_above = 1.1;         // recut when the measured imbalance is above (balanced)
+  double rebalance_interval = 0;        // s between in-run checks (coupled, balanced); 0: none
   std::array<FaceBoundary, 6> faces{};  // default: triply periodic
   UnitConverter units;
   FluidOutputParams output;  // fluid.output, fluid.stability, fluid.validation

@@ -9,7 +9,7 @@ bool may_change_at_restart(const std::string& key_path) {
   // Where the run stops, what it writes and how it reports; none of them is state. The fluid's
   // layout neither: the checkpoint holds the global lattice, and another layout changes the
   // loads only by the order of their sums (round-off, as another fluid rank count does).
-  static constexpr std::array<std::string_view, 10> kExact = {"time.end",
+  static constexpr std::array<std::string_view, 11> kExact = {"time.end",
                                                               "time.progress_interval",
                                                               "log_level",
                                                               "coupling.record",
@@ -18,7 +18,8 @@ bool may_change_at_restart(const std::string& key_path) {
                                                               "coupling.stall_timeout",
                                                               "fluid.decomposition",
                                                               "fluid.covered_cell_weight",
-                                                              "fluid.rebalance_above"};
+                                                              "fluid.rebalance_above",
+                                                              "fluid.rebalance_interval"};
   for (const auto k : kExact)
     if (key_path == k) return true;
   // The stability watches' limits too: a run stopped by a watch may continue with a limit the

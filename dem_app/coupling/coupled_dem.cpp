@@ -152,6 +152,14 @@ int run_coupled_dem(AppContext& ctx) {
       trouble =
           check_bodies(owned, step, time, setup, limits, session.agreement_at(step), ctx.side_comm);
     session.advance(trouble.empty() ? 0 : kBodiesUnstable);
+    // The fluid's in-run rebalancing: its boxes (new or not), and when new, this step's states
+    // routed by them once more (docs/scaling.md, "Rebalancing during a run").
+    if (session.agrees() && session.ongoing() && schedule.rebalance_at(step)) {
+      const bool moved = coupler->follow_layout();
+      if (moved && ctx.rank == 0)
+        ctx.log->info("step {}: the fluid cut its lattice anew; the states go by its new boxes",
+                      step);
+    }
   }
   session.count("bodies_owned", double(owned.size()));
   double spheres = 0;  // of the owned bodies' clumps (without LAMMPS's helper spheres)

@@ -15,6 +15,7 @@
 #include "coupler_lib/coupling/coupling_session.hpp"
 #include "coupler_lib/coupling/fluid_coupler.hpp"
 #include "coupler_lib/coupling/world.hpp"
+#include "coupler_lib/output/gather.hpp"
 #include "coupler_lib/scene/band_calibration.hpp"
 #include "coupler_lib/scene/shape_catalogue.hpp"
 #include "fluid_app/coupling/fluid_checkpoint.hpp"
@@ -126,6 +127,74 @@ void count_work(CouplingSession& session, const FluidSolver<T>& solver,
   session.count("halo_messages_per_step", double(halo.messages) / exchanges);
 }
 
+// Collective: the work of the lattice as the porosity field shows it now (rebalance.hpp).
+template <class T>
+CheckpointWork measured_work(const FluidSolver<T>& solver, double covered_cell_weight) {
+  const PorousField<T>& field = solver.porous();
+  return measure_work(solver.box(),
+                      field.active ? std::span<const float>(field.d) : std::span<const float>(),
+                      covered_cell_weight, solver.comm());
+}
+
+// An in-run rebalancing step (fluid.rebalance_interval; both programs are at step `step`, the
+// states of which `states` holds and the bodies are embedded). Above fluid.rebalance_above the
+// lattice is cut anew by the measured work, exactly as a restart from a checkpoint of this step
+// would cut it (restart_layout), unless the new blocks would hold no lower imbalance
+// (imbalance_of_cuts, counted before anything moves): the populations move to the new blocks, the
+// bodies are embedded anew from this step's states (the DEM sends them again when the boxes
+// changed), and the covered momentum of the step goes whole to the lowest rank that now holds the
+// body. The run then continues as that restart would, bit for bit. Either way the boxes are
+// announced to the DEM side, which routes by them.
+template <class T, class Embed>
+void rebalance(AppContext& ctx, FluidRun<T>& run, FluidCoupler& coupler, StateFeed& feed,
+               const std::vector<BodyState>& states, std::int64_t step, const Embed& embed,
+               std::unique_ptr<hlbm::BodyField<T>>& bodies, hlbm::PenaltyLoads<T>& penalty_loads) {
+  const FluidParams& fluid = *ctx.scene.fluid;
+  CheckpointWork work = measured_work(run.solver(), fluid.covered_cell_weight);
+  work.layout = run.layout_weights();
+  const LayoutChoice choice = restart_layout(fluid, work, ctx.size);
+  const PorousField<T>& field = run.solver().porous();
+  const double cut = choice.same_as_checkpoint
+                         ? work.imbalance
+                         : imbalance_of_cuts(run.solver().box(),
+                                             field.active ? std::span<const float>(field.d)
+                                                          : std::span<const float>(),
+                                             fluid.covered_cell_weight, choice.weights,
+                                             run.solver().decomposition().dims(), ctx.side_comm);
+  if (choice.same_as_checkpoint || cut >= work.imbalance) {
+    if (ctx.rank == 0)
+      ctx.log->info("step {}: load imbalance of the weighted work {:.3f}{}: cuts kept", step,
+                    work.imbalance,
+                    choice.same_as_checkpoint
+                        ? fmt::format(", at most fluid.rebalance_above = {}", fluid.rebalance_above)
+                        : fmt::format(" (new cuts by the measured work would give {:.3f})", cut));
+    coupler.announce_layout(geometry_of(ctx.scene, run.solver().box(), {}).mine);
+    return;
+  }
+  std::vector<CoveredRecord> covered;
+  for (const auto& m : penalty_loads.covered_memory(*bodies))
+    covered.push_back({ctx.rank, m.id, m.covered, m.covered_moment});
+  covered = gather_to_root(std::span<const CoveredRecord>(covered), ctx.side_comm);
+  broadcast(covered, 0, ctx.side_comm);
+  bodies.reset();
+  run.relayout(choice.weights,
+               fmt::format("rebalanced at step {}: load imbalance {:.3f} measured, above "
+                           "fluid.rebalance_above = {}",
+                           step, work.imbalance, fluid.rebalance_above));
+  const bool moved = coupler.announce_layout(geometry_of(ctx.scene, run.solver().box(), {}).mine);
+  const std::vector<BodyState>& now = moved ? feed.start(step) : states;
+  bodies = embed();
+  bodies->update(now);
+  penalty_loads = hlbm::PenaltyLoads<T>{};
+  restore_covered(penalty_loads, *bodies, covered, false, ctx.rank, ctx.side_comm);
+  const double after = measured_work(run.solver(), fluid.covered_cell_weight).imbalance;
+  if (ctx.rank == 0)
+    ctx.log->info(
+        "step {}: load imbalance of the weighted work {:.3f} -> {:.3f} (lattice cut "
+        "anew by the measured work)",
+        step, work.imbalance, after);
+}
+
 template <class T>
 int run_typed(AppContext& ctx) {
   const Scene& scene = ctx.scene;
@@ -155,14 +224,14 @@ int run_typed(AppContext& ctx) {
     }
   }
   FluidRun<T> run(ctx, shapes, restart_from.empty() ? nullptr : &layout);
-  FluidSolver<T>& solver = run.solver();
-  int solver_rank = 0;
-  MPI_Comm_rank(solver.comm(), &solver_rank);
+  // run.solver() is replaced when the lattice is cut anew during the run (rebalance below):
+  // nothing keeps a reference to it across steps. Its ranks are the side's, in order.
+  const int solver_rank = ctx.rank;
   std::optional<FluidRestart> restart;
   std::vector<T> restored;  // this rank's populations from the checkpoint
   if (!restart_from.empty()) {
     try {
-      restart = read_fluid_checkpoint(restart_from, session.header(0), solver, restored);
+      restart = read_fluid_checkpoint(restart_from, session.header(0), run.solver(), restored);
       session.resume(restart_from, restart->header.step);
       ctx.log->info("restart from {} at step {} (t = {:.6e} s; written by {} fluid ranks)",
                     restart_from, restart->header.step, restart->header.time,
@@ -172,14 +241,20 @@ int run_typed(AppContext& ctx) {
     }
   }
   RunWatch<T> watch(ctx, run, restart ? restart->lengths.series : -1);
-  const FluidGeometry geometry = geometry_of(scene, solver.box(), shapes);
+  const FluidGeometry geometry = geometry_of(scene, run.solver().box(), shapes);
   std::unique_ptr<FluidCoupler> coupler =
       replay ? std::make_unique<FluidCoupler>(ctx, ctx.cli.replay, geometry)
              : std::make_unique<FluidCoupler>(world, geometry);
 
   hlbm::LatticeFrame frame{Eigen::Vector3d::Zero(), scene.fluid->units};
-  const hlbm::Subdomain sub = hlbm::subdomain_of(solver, *scene.fluid);
-  hlbm::BodyField<T> bodies(shapes, sub, frame, solver.porous(), scene.fluid->porosity_lookup);
+  const hlbm::Subdomain sub = hlbm::subdomain_of(run.solver(), *scene.fluid);
+  // The bodies on this rank's block (made anew with the block when the lattice is re-cut).
+  auto embed = [&] {
+    return std::make_unique<hlbm::BodyField<T>>(
+        shapes, hlbm::subdomain_of(run.solver(), *scene.fluid), frame, run.solver().porous(),
+        scene.fluid->porosity_lookup);
+  };
+  std::unique_ptr<hlbm::BodyField<T>> bodies = embed();
   hlbm::PenaltyLoads<T> penalty_loads;
   const SettlingForce settling = settling_force(scene, shapes);
   if (settling.active) {
@@ -190,9 +265,9 @@ int run_typed(AppContext& ctx) {
       if (scene.fluid->control.feed_forward)
         run.control()->set_feed_forward(settling.fluid_force_lattice);
     } else {
-      auto force = solver.uniform_force();
+      auto force = run.solver().uniform_force();
       for (int a = 0; a < 3; ++a) force[a] += settling.fluid_force_lattice[a];
-      solver.set_uniform_force(force);
+      run.solver().set_uniform_force(force);
     }
     ctx.log->info("{}", settling.description);
   }
@@ -206,45 +281,42 @@ int run_typed(AppContext& ctx) {
     if (dir.is_relative()) dir = std::filesystem::path(scene.file).parent_path() / dir;
     if (ctx.rank == 0) std::filesystem::create_directories(dir);
     audit = std::make_unique<MomentumAudit>((dir / (scene.name + "_momentum.csv")).string(), scene,
-                                            shapes, settling.net_weight, solver.comm(),
+                                            shapes, settling.net_weight, ctx.side_comm,
                                             restart ? restart->lengths.momentum : -1);
   }
   if (restart) {
     // After the run's own set-up of forces (feed-forward), which the memory overrides.
-    solver.restore(restart->memory);
+    run.solver().restore(restart->memory);
     if (run.control()) run.control()->restore(restart->control_integral);
-    solver.set_interior_populations(restored);
+    run.solver().set_interior_populations(restored);
     restored = {};
   }
   const bool penalty = scene.fluid->loads == LoadMethod::penalization;
 
   StateFeed feed(*coupler, scene.coupling.overlap);
   const auto& first = feed.start(session.step());
-  if (audit && !restart) audit->write(0, 0.0, solver, first);
-  bodies.update(first);
+  if (audit && !restart) audit->write(0, 0.0, run.solver(), first);
+  bodies->update(first);
   if (restart)
-    restore_covered(penalty_loads, bodies, restart->covered, layout.same_as_checkpoint, solver_rank,
-                    solver.comm());
+    restore_covered(penalty_loads, *bodies, restart->covered, layout.same_as_checkpoint,
+                    solver_rank, ctx.side_comm);
   else
     run.start();
   // Every checkpoint holds a state that passed the stability check.
   watch.check_also_at([&](long step) { return session.checkpoint_at(step); });
   session.on_checkpoint([&](const std::string& prefix, const CheckpointHeader& header) {
     std::vector<CoveredRecord> covered;
-    for (const auto& m : penalty_loads.covered_memory(bodies))
+    for (const auto& m : penalty_loads.covered_memory(*bodies))
       covered.push_back({solver_rank, m.id, m.covered, m.covered_moment});
     SeriesLengths lengths;
     lengths.series = watch.series_bytes();
     if (audit) lengths.momentum = audit->bytes();
-    const PorousField<T>& field = solver.porous();
-    CheckpointWork work = measure_work(
-        solver.box(), field.active ? std::span<const float>(field.d) : std::span<const float>(),
-        scene.fluid->covered_cell_weight, solver.comm());
+    CheckpointWork work = measured_work(run.solver(), scene.fluid->covered_cell_weight);
     work.layout = run.layout_weights();
     if (ctx.rank == 0)
       ctx.log->info("checkpoint at step {}: load imbalance of the weighted work {:.3f}",
                     header.step, work.imbalance);
-    write_fluid_checkpoint(prefix, header, solver,
+    write_fluid_checkpoint(prefix, header, run.solver(),
                            run.control() ? run.control()->integral() : std::array<double, 3>{},
                            covered, lengths, work);
   });
@@ -253,23 +325,27 @@ int run_typed(AppContext& ctx) {
     const std::int64_t step = session.next_step();
     session.timed("lattice", [&] { run.step(); });
     const auto loads = session.timed("porosity + momentum exchange", [&] {
-      return penalty ? penalty_loads.loads(bodies, step)
-                     : hlbm::momentum_exchange(bodies, hlbm::populations_of(solver), step);
+      return penalty ? penalty_loads.loads(*bodies, step)
+                     : hlbm::momentum_exchange(*bodies, hlbm::populations_of(run.solver()), step);
     });
     feed.send(step, loads);
     // The audit, the agreement and a checkpoint need the states of this very step (a brief
     // stop of the overlap).
     const bool audit_now = audit && session.output_at(step);
     const auto& states = feed.next(step, audit_now || session.agreement_at(step));
-    if (audit_now) audit->write(step, session.time_of(step), solver, states);
+    if (audit_now) audit->write(step, session.time_of(step), run.solver(), states);
     // The states are embedded only once both programs found this step sound.
     session.advance(watch.stopped() ? kFluidUnstable : 0, [&] {
       if (feed.fresh())
-        session.timed("porosity + momentum exchange", [&] { bodies.update(states); });
+        session.timed("porosity + momentum exchange", [&] { bodies->update(states); });
     });
+    if (session.ongoing() && session.schedule().rebalance_at(step))
+      session.timed("rebalancing", [&] {
+        rebalance(ctx, run, *coupler, feed, states, step, embed, bodies, penalty_loads);
+      });
   }
   if (session.end() == SessionEnd::completed) feed.finish(session.step());
-  count_work(session, solver, scene.fluid->covered_cell_weight);
+  count_work(session, run.solver(), scene.fluid->covered_cell_weight);
   session.count("steps_per_s", run.steps_per_s_after_first_line());
   const int rc = watch.finish();
   const int end = session.finish(coupler->times());

@@ -26,6 +26,7 @@ class MeanFlowControl {
   void after_step();
   // The feed-forward F_ff, applied at once (not only from the next control step).
   void set_feed_forward(const std::array<double, 3>& force);
+  const std::array<double, 3>& feed_forward() const { return feed_forward_; }
 
   // The integral of the error (sum e): what a checkpoint stores besides the solver's memory.
   const std::array<double, 3>& integral() const { return integral_; }

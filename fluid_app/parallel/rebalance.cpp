@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "fluid_app/parallel/balance.hpp"
+#include "fluid_app/parallel/decomposition.hpp"
 
 namespace lbdem {
 
@@ -33,6 +34,43 @@ CheckpointWork measure_work(const LocalBox& box, std::span<const float> d,
   w.imbalance = most / (total / ranks);
   w.fluid_ranks = ranks;
   return w;
+}
+
+double imbalance_of_cuts(const LocalBox& box, std::span<const float> d, double covered_cell_weight,
+                         const SliceWeights& weights, const std::array<int, 3>& dims,
+                         MPI_Comm comm) {
+  // The block index along each axis of every global slice.
+  std::array<std::vector<int>, 3> block;
+  for (int a = 0; a < 3; ++a) {
+    block[a].assign(std::size_t(box.global[a]), 0);
+    const bool weighted = weights[a].size() == std::size_t(box.global[a]);
+    for (int r = 0; r < dims[a]; ++r) {
+      const Extent e = weighted ? weighted_extent(weights[a], dims[a], r)
+                                : block_extent(box.global[a], dims[a], r);
+      for (int i = e.offset; i < e.offset + e.count; ++i) block[a][std::size_t(i)] = r;
+    }
+  }
+  const std::size_t blocks = static_cast<std::size_t>(dims[0]) * static_cast<std::size_t>(dims[1]) *
+                             static_cast<std::size_t>(dims[2]);
+  std::vector<double> work(blocks, 0.0);
+  for (int z = 1; z <= box.n[2]; ++z)
+    for (int y = 1; y <= box.n[1]; ++y)
+      for (int x = 1; x <= box.n[0]; ++x) {
+        const bool c = !d.empty() && d[std::size_t(box.index(x, y, z))] < 1.0f;
+        const std::size_t b =
+            std::size_t(block[0][std::size_t(box.offset[0] + x - 1)]) +
+            std::size_t(dims[0]) *
+                (std::size_t(block[1][std::size_t(box.offset[1] + y - 1)]) +
+                 std::size_t(dims[1]) * std::size_t(block[2][std::size_t(box.offset[2] + z - 1)]));
+        work[b] += weighted_work(1, c ? 1 : 0, covered_cell_weight);
+      }
+  MPI_Allreduce(MPI_IN_PLACE, work.data(), int(work.size()), MPI_DOUBLE, MPI_SUM, comm);
+  double most = 0, total = 0;
+  for (double w : work) {
+    most = std::max(most, w);
+    total += w;
+  }
+  return most / (total / double(work.size()));
 }
 
 LayoutChoice restart_layout(const FluidParams& fluid, const CheckpointWork& at, int fluid_ranks) {

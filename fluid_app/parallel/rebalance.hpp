@@ -37,6 +37,15 @@ struct CheckpointWork {
 CheckpointWork measure_work(const LocalBox& box, std::span<const float> d,
                             double covered_cell_weight, MPI_Comm comm);
 
+// Collective: the load imbalance (max / mean over the blocks of the weighted work) that blocks
+// cut by `weights` on a grid of `dims` would hold (as Decomposition cuts them), counted on the
+// porosity `d` of this rank's block as it is now: what a cut would give, before anything moves.
+// In-run rebalancing cuts only when it is lower than the imbalance now (a rectilinear grid
+// equalizes slabs, and can leave one small dense spot worse off).
+double imbalance_of_cuts(const LocalBox& box, std::span<const float> d, double covered_cell_weight,
+                         const SliceWeights& weights, const std::array<int, 3>& dims,
+                         MPI_Comm comm);
+
 // The layout of a restart: the weights to cut by (empty: regular blocks), why (for the log),
 // and whether its blocks are the checkpoint's (each rank then takes back its own covered
 // momentum; otherwise it goes to the lowest rank that holds the body).

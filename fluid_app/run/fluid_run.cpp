@@ -2,7 +2,9 @@
 
 #include "coupler_lib/coupling/coupling_times.hpp"
 #include "coupler_lib/coupling/schedule.hpp"
+#include "fluid_app/lattice/d3q19.hpp"
 #include "fluid_app/parallel/balance.hpp"
+#include "fluid_app/parallel/move_blocks.hpp"
 #include "fluid_app/run/fluid_summary.hpp"
 #include "fluid_app/run/run_watch.hpp"
 
@@ -71,6 +73,39 @@ FluidRun<T>::FluidRun(AppContext& ctx, const std::vector<Shape>& shapes,
   progress_ =
       std::make_unique<Progress>(ctx.log, ctx.scene.time.progress_interval, ctx.scene.time.end,
                                  double(params_.cells[0]) * params_.cells[1] * params_.cells[2]);
+}
+
+template <class T>
+void FluidRun<T>::relayout(const SliceWeights& weights, const std::string& why) {
+  std::vector<T> populations;
+  solver_->interior_populations(populations);
+  const LocalBox from = solver_->box();
+  const SolverMemory memory = solver_->memory();
+  std::array<double, 3> integral{}, feed_forward{};
+  if (control_) {
+    integral = control_->integral();
+    feed_forward = control_->feed_forward();
+  }
+  // The old lattice goes before the new one is allocated (the populations are held once more
+  // meanwhile, as a restart holds its block of the checkpoint).
+  control_.reset();
+  solver_.reset();
+  layout_weights_ = weights;
+  solver_ = std::make_unique<FluidSolver<T>>(params_, ctx_.side_comm, std::array<int, 3>{0, 0, 0},
+                                             layout_weights_);
+  // The order of a restart: the controller's set-up, then the memory, which overrides the
+  // force it applied, then the populations (their AA parity follows the restored step count).
+  if (params_.control.enabled) {
+    control_ = std::make_unique<MeanFlowControl<T>>(*solver_, params_);
+    control_->set_feed_forward(feed_forward);
+    control_->restore(integral);
+  }
+  solver_->restore(memory);
+  solver_->set_interior_populations(
+      move_blocks(populations, d3q19::Q, from, solver_->box(), ctx_.side_comm));
+  const auto& d = solver_->decomposition();
+  ctx_.log->info("decomposition {} x {} x {} ranks ({})", d.dims()[0], d.dims()[1], d.dims()[2],
+                 why);
 }
 
 template <class T>

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "coupler_lib/app/progress.hpp"
@@ -50,6 +51,12 @@ class FluidRun {
   bool done() const { return solver_->steps() >= total_steps_; }
   // The slice weights the decomposition's cuts were placed by (empty: regular blocks).
   const SliceWeights& layout_weights() const { return layout_weights_; }
+  // Collective. Cuts the lattice anew by `weights` while the run goes on (in-run rebalancing,
+  // docs/scaling.md): a new solver on the new blocks takes the old one's populations
+  // (move_blocks), its memory (step count, force, impulse, mean flow) and the controller's
+  // state, so the lattice continues bit for bit; its porous field starts inactive and the
+  // caller embeds the bodies anew. References to the old solver are invalid afterwards.
+  void relayout(const SliceWeights& weights, const std::string& why);
   StepInfo info() const;
 
   // Called after every step (and once with step 0 by start()), e.g. by output writers.

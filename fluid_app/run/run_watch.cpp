@@ -55,7 +55,9 @@ template <class T>
 RunWatch<T>::RunWatch(AppContext& ctx, FluidRun<T>& run, long long series_resume_bytes)
     : ctx_(ctx), run_(run), params_(run.params().output) {
   const FluidParams& fp = run.params();
-  const MPI_Comm comm = run.solver().comm();
+  // The side communicator, not the solver's: the same ranks in the same order (the Cartesian
+  // grid keeps them), and it outlives a solver replaced by in-run rebalancing.
+  const MPI_Comm comm = ctx.side_comm;
   if (params_.writes_files())
     output_ = std::make_unique<FluidOutput>(params_, fp.units, ctx.scene.name, comm, fp.cells,
                                             series_resume_bytes);

@@ -67,5 +67,21 @@ TEST(MeasureWork, SlicesCountCoveredCellsAtTheirWeight) {
   EXPECT_DOUBLE_EQ(measure_work(box, {}, 10.0, MPI_COMM_SELF).measured[1][2], 8.0);
 }
 
+TEST(ImbalanceOfCuts, CountsTheBlocksANewCutWouldHoldBeforeAnythingMoves) {
+  LocalBox box;
+  box.n = {4, 1, 1};
+  box.global = {4, 1, 1};
+  std::vector<float> d(std::size_t(box.cells_with_ghosts()), 1.0f);
+  d[std::size_t(box.index(1, 1, 1))] = 0.0f;  // global cell 0 covered: work 10, the rest 1
+  const std::array<int, 3> dims{2, 1, 1};
+  // Equal blocks [0, 1] and [2, 3]: 11 and 2 against a mean of 6.5.
+  EXPECT_DOUBLE_EQ(imbalance_of_cuts(box, d, 10.0, {}, dims, MPI_COMM_SELF), 11.0 / 6.5);
+  // Cut by the slices' work (10, 1, 1, 1): [0] and [1, 3], 10 and 3.
+  const SliceWeights w = {std::vector<double>{10, 1, 1, 1}, {}, {}};
+  EXPECT_DOUBLE_EQ(imbalance_of_cuts(box, d, 10.0, w, dims, MPI_COMM_SELF), 10.0 / 6.5);
+  // Without bodies every cell counts 1: 1 and 3 cells.
+  EXPECT_DOUBLE_EQ(imbalance_of_cuts(box, {}, 10.0, w, dims, MPI_COMM_SELF), 1.5);
+}
+
 }  // namespace
 }  // namespace lbdem

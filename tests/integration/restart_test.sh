@@ -19,7 +19,10 @@
 # parts 1 and 2 with fluid.decomposition: balanced and the restart keeping the checkpoint's cuts
 # (fluid.rebalance_above: 100, byte for byte), then the same checkpoint continued on NF ranks
 # cut anew by the work measured at the checkpoint (rebalance_above: 1): another layout, equal
-# within round-off.
+# within round-off; then the straight run checked at step 40 while it runs
+# (fluid.rebalance_interval): cut anew, it must continue exactly as that restart did, byte for
+# byte; where the new cuts would not lower the blocks' imbalance, it keeps its cuts and equals
+# the straight run byte for byte.
 # Usage: restart_test.sh BUILD_DIR SOURCE_DIR NF ND [quick|overlap|control|rebalance]
 set -euo pipefail
 build=$1 src=$2 nf=$3 nd=$4 mode=${5:-}
@@ -40,12 +43,12 @@ run() {  # run LOG NF ND [fluid/dem options...] : scene is scene.yaml
   mpirun -np "$a" "$fluid" "$@" scene.yaml : -np "$b" "$dem" "$@" scene.yaml > "$log" 2>&1
 }
 fail() { echo "FAIL: $*"; exit 1; }
-rebalance_above=100
+rebalance_above=100 rebalance_interval=""
 scene() {  # scene END [extra coupling lines]
   sed "s/end: 2.0e-2/end: $1/" "$src/tests/integration/restart_scene.yaml" > scene.yaml
   [ "$mode" = control ] && sed -i 's/^  tau: 0.6$/  tau: 0.6\n  mean_velocity_control: {target: [0, 0, 0], gain: 0.3, integral_gain: 0.05, feed_forward: false}/' scene.yaml
   [ "$mode" = rebalance ] \
-    && sed -i "s/^fluid:$/fluid:\n  decomposition: balanced\n  rebalance_above: $rebalance_above/" scene.yaml
+    && sed -i "s/^fluid:$/fluid:\n  decomposition: balanced\n  rebalance_above: $rebalance_above${rebalance_interval:+\\n  rebalance_interval: $rebalance_interval}/" scene.yaml
   shift
   [ "$mode" = overlap ] && set -- "$@" "overlap: true"
   for line in "$@"; do printf '  %s\n' "$line" >> scene.yaml; done
@@ -114,6 +117,30 @@ print(f"restart on another fluid layout: largest relative difference {worst:.3e}
 assert worst < 1e-6, worst
 PY
 if [ "$mode" = rebalance ]; then
+  # 4. The straight run again, cut anew at step 40 while it runs (no checkpoint, no restart).
+  cp restart_sphere_bodies.csv restarted_bodies.csv && cp restart_sphere_momentum.csv restarted_momentum.csv
+  rm -rf "$ckdir" restart_sphere_bodies.csv restart_sphere_momentum.csv
+  rebalance_interval=1.02e-2  # 40 steps of 2.552e-4 s
+  scene 2.0e-2
+  run inrun.log "$nf" "$nd" || { cat inrun.log; fail "run rebalanced during the run"; }
+  grep -m1 "step 40: load imbalance of the weighted work" inrun.log \
+    || { cat inrun.log; fail "no in-run check at step 40"; }
+  if grep -q "step 40: .*(new cuts by the measured work would give [0-9.]*): cuts kept" inrun.log; then
+    # New slabs would not lower the blocks' imbalance (one small body on a grid of 2 x 2 x 2
+    # blocks): the run keeps its cuts and goes on as the straight run, byte for byte.
+    cmp restart_sphere_bodies.csv straight_bodies.csv || fail "the body trace changed where the cuts were kept"
+    cmp restart_sphere_momentum.csv straight_momentum.csv || fail "the momentum audit changed where the cuts were kept"
+    echo "in-run check at step 40 ($nf:$nd): new cuts would not help, cuts kept, identical byte for byte to the straight run"
+  else
+    grep -q "step 40: load imbalance of the weighted work [0-9.]* -> [0-9.]*" inrun.log \
+      || { cat inrun.log; fail "no in-run rebalancing at step 40"; }
+    grep -q "the fluid cut its lattice anew" inrun.log || { cat inrun.log; fail "the DEM kept the old boxes"; }
+    cmp restart_sphere_bodies.csv restarted_bodies.csv \
+      || fail "the body trace of the in-run rebalancing differs from the restart cut at step 40"
+    cmp restart_sphere_momentum.csv restarted_momentum.csv \
+      || fail "the momentum audit of the in-run rebalancing differs from the restart cut at step 40"
+    echo "in-run rebalancing at step 40 ($nf:$nd): identical byte for byte to the restart cut there"
+  fi
   echo "PASS: restart with rebalancing ($nf:$nd) in $(echo "$(date +%s.%N) - $started" | bc) s"
   exit 0
 fi

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "coupler_lib/coupling/schedule.hpp"
+#include "coupler_lib/coupling/stop_request.hpp"
 
 namespace lbdem {
 namespace {
@@ -47,6 +48,21 @@ TEST(Schedule, StepsCadenceAndExchange) {
   EXPECT_FALSE(s.exchange_at(5));
   EXPECT_TRUE(s.output_at(20));
   EXPECT_FALSE(s.checkpoint_at(25));
+}
+
+TEST(Schedule, InRunRebalancingStepsAreAgreementSteps) {
+  Scene scene = coupled();
+  EXPECT_EQ(make_schedule(scene, 0.01, 0.003).rebalance_interval, 0);  // none by default
+  scene.fluid->decomposition = DecompositionKind::balanced;
+  scene.fluid->rebalance_interval = 0.05;
+  const Schedule s = make_schedule(scene, 0.01, 0.003);
+  EXPECT_EQ(s.rebalance_interval, 5);
+  EXPECT_TRUE(s.rebalance_at(10));
+  EXPECT_FALSE(s.rebalance_at(12));
+  // Both programs meet there: an overlapped fluid waits for the states of that step.
+  EXPECT_TRUE(agreement_at(scene, s, 10));
+  scene.fluid->output.stability.interval = 0;
+  EXPECT_FALSE(agreement_at(scene, s, 12));
 }
 
 TEST(Schedule, NoCadenceByDefaultAndEndRoundsUp) {

@@ -25,7 +25,8 @@ TEST(SceneFingerprint, KeysARestartMayChange) {
        {"time.end", "log_level", "coupling.checkpoint_interval", "coupling.checkpoint_keep",
         "fluid.output.directory", "dem.output.interval", "coupling.output_interval",
         "coupling.stall_timeout", "fluid.stability.max_mach", "dem.max_overlap",
-        "fluid.decomposition", "fluid.covered_cell_weight", "fluid.rebalance_above"})
+        "fluid.decomposition", "fluid.covered_cell_weight", "fluid.rebalance_above",
+        "fluid.rebalance_interval"})
     EXPECT_TRUE(may_change_at_restart(k)) << k;
   for (const char* k : {"fluid.viscosity", "fluid.dx", "coupling.margin", "coupling.overlap",
                         "dem.gravity", "bodies.0.position"})
