@@ -30,6 +30,16 @@ struct PorousBody {
   std::array<T, 3> omega{};     // angular velocity, rad per time step
 };
 
+// u_p = v + w x r (docs/method.md Eq. (7)) at lever arm r from the centre, lattice units, in the
+// arithmetic of R (the lattice's T, or double for the link-wise loads). The kernel writes the same
+// expression on its gathered body table (fluid_app/kernel/aa_kernel.hpp).
+template <class R, class T>
+std::array<R, 3> solid_velocity(const PorousBody<T>& b, const std::array<R, 3>& r) {
+  return {R(b.velocity[0]) + R(b.omega[1]) * r[2] - R(b.omega[2]) * r[1],
+          R(b.velocity[1]) + R(b.omega[2]) * r[0] - R(b.omega[0]) * r[2],
+          R(b.velocity[2]) + R(b.omega[0]) * r[1] - R(b.omega[1]) * r[0]};
+}
+
 // What the penalization exchanged with the lattice in one step, summed over the interior
 // cells of this rank that a body owns (body index k), lattice units, about the body's centre
 // (docs/method-loads.md). With pen = rho (1 - d)(u_p - v) and u+ the shifted velocity:

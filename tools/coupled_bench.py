@@ -11,21 +11,24 @@ lattice, and the wall time per step split into the parts both programs report at
 of a coupled run (fluid: lattice, porosity + momentum exchange, exchange, idle; DEM: LAMMPS
 with its substeps, exchange, idle) plus the DEM's clump-sphere steps per second.
 
-MLUPS is the mean of the progress lines after the first one (the first progress interval
-is the warm-up: caches, first embedding, LAMMPS set-up run); with fewer than two progress
-lines it falls back to the cells over the sum of the fluid rank's per-step parts. The split
-is averaged over all steps of the run. --quick runs the two small quick_* scenes for a
-smoke test (ctest checks that every figure is printed, never a time).
+Every figure comes from the run summaries both programs write at the end
+(<name>_fluid_summary.json, <name>_dem_summary.json; docs/user-guide.md, "Run summary"), no
+log line is parsed. MLUPS is the lattice cells times fluid rank 0's steps per second from its
+first progress line to its last (the first progress interval is the warm-up: caches, first
+embedding, LAMMPS set-up run); with fewer than two progress lines it falls back to the cells
+over the sum of the fluid rank's per-step parts. The split is averaged over all steps of the
+run. --quick runs the two small quick_* scenes for a smoke test (ctest checks that every
+figure is printed, never a time).
 """
 import argparse
+import json
 import os
-import re
 import subprocess
 import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from lbdem import run  # noqa: E402
+from lbdem import io, run  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BENCH = os.path.join(ROOT, "configs", "bench")
@@ -47,16 +50,6 @@ FULL = [
 ]
 QUICK = [("quick_fluid29", None), ("quick_cubes8_c27", "quick_fluid29")]
 
-NUM = r"([0-9.eE+-]+)"
-FLUID_SPLIT = re.compile(
-    r"time per coupled step \(fluid rank 0\): lattice " + NUM + r" s, porosity \+ momentum "
-    r"exchange " + NUM + r" s, exchange " + NUM + r" s, idle \(waiting for dem_app\) " + NUM)
-DEM_SPLIT = re.compile(r"time per coupled step \(DEM rank 0\): DEM " + NUM + r" s \((\d+) substeps\), "
-                       r"exchange " + NUM + r" s, idle \(waiting for fluid_app\) " + NUM)
-PROGRESS = re.compile(r"steps/s, " + NUM + r" MLUPS")
-CELLS = re.compile(r"fluid lattice (\d+) x (\d+) x (\d+) = ")
-SPHERES = re.compile(r"(\d+) bodies, (\d+) clump spheres")
-
 
 def run_scene(args, name):
     scene = os.path.join(BENCH, name + ".yaml")
@@ -69,36 +62,32 @@ def run_scene(args, name):
     t0 = time.monotonic()
     p = subprocess.run(cmd, capture_output=True, text=True, cwd=BENCH, env=run.environment())
     wall = time.monotonic() - t0
-    log = p.stdout + p.stderr
     if p.returncode != 0:
-        sys.stderr.write(log[-4000:])
+        sys.stderr.write((p.stdout + p.stderr)[-4000:])
         raise SystemExit(f"coupled_bench: {' '.join(cmd)} failed with status {p.returncode}")
-    m = CELLS.search(log)
-    cells = int(m.group(1)) * int(m.group(2)) * int(m.group(3))
+    resolved = io.load_scene(scene, args.build)
+    summary = {}
+    for side in ("fluid", "dem") if coupled else ("fluid",):
+        with open(io.summary_path(scene, side, resolved)) as f:
+            summary[side] = json.load(f)
+    fluid = summary["fluid"]
+    cells = int(sum(fluid["per_rank"]["cells"]["values"]))
     r = {"name": name, "cells": cells, "wall": wall, "coupled": coupled}
-    rates = [float(x) for x in PROGRESS.findall(log)]
+    part = fluid["per_step_s"]
     if coupled:
-        f = FLUID_SPLIT.search(log)
-        d = DEM_SPLIT.search(log)
-        s = SPHERES.search(log)
-        if not (f and d and s):
-            sys.stderr.write(log[-4000:])
-            raise SystemExit(f"coupled_bench: {name}: the per-step split is missing from the log")
-        r.update(lattice=float(f.group(1)), bodies=float(f.group(2)), f_exchange=float(f.group(3)),
-                 f_idle=float(f.group(4)), dem=float(d.group(1)), substeps=int(d.group(2)),
-                 d_exchange=float(d.group(3)), d_idle=float(d.group(4)), spheres=int(s.group(2)))
-        step = r["lattice"] + r["bodies"] + r["f_exchange"] + r["f_idle"]
-        fallback = cells / step * 1e-6
+        dem = summary["dem"]
+        r.update(lattice=part["lattice"], bodies=part["porosity + momentum exchange"],
+                 f_exchange=part["exchange"], f_idle=part["idle"], dem=dem["per_step_s"]["DEM"],
+                 substeps=int(dem["per_rank"]["substeps"]["values"][0]),
+                 d_exchange=dem["per_step_s"]["exchange"], d_idle=dem["per_step_s"]["idle"],
+                 spheres=int(sum(dem["per_rank"]["clump_spheres"]["values"])))
+    # Fluid rank 0's steps per second after its first progress line (the first interval is
+    # the warm-up); with fewer than two lines, the cells over the fluid's time per step.
+    rate = fluid["per_rank"]["steps_per_s"]["values"][0]
+    if rate > 0:
+        r["mlups"], r["from"] = cells * rate * 1e-6, "progress"
     else:
-        fallback = None
-    if len(rates) >= 2:
-        r["mlups"] = sum(rates[1:]) / len(rates[1:])
-        r["from"] = "progress"
-    elif fallback is not None:
-        r["mlups"] = fallback
-        r["from"] = "split"
-    else:
-        raise SystemExit(f"coupled_bench: {name}: fewer than two progress lines; run longer")
+        r["mlups"], r["from"] = cells / sum(part.values()) * 1e-6, "split"
     return r
 
 

@@ -18,7 +18,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from lbdem import io, run  # noqa: E402
+from lbdem import fixed_body  # noqa: E402
 
 DX = 1e-4
 EDGES = (4, 4, 16)  # cells
@@ -39,40 +39,6 @@ def write_box_stl(path):
                     f.write("   vertex %g %g %g\n" % v[i])
                 f.write("  endloop\n endfacet\n")
         f.write("endsolid box\n")
-
-
-def scene_text(name, axis, shape, radius):
-    g = [0.0, 0.0, 0.0]
-    g["xyz".index(axis)] = 1.0e-4
-    return f"""name: {name}
-time: {{end: 3.0, progress_interval: 30}}
-fluid:
-  domain: {[c * DX for c in BOX]}
-  dx: {DX}
-  viscosity: 1.0e-6
-  density: 1000
-  tau: 0.6
-  hydrodynamic_radius: {radius}
-  characteristic_velocity: 2.0e-5
-  characteristic_length: 4.0e-4
-  body_force: {g}
-  boundaries: {{x_min: periodic, x_max: periodic, y_min: periodic, y_max: periodic, z_min: periodic, z_max: periodic}}
-  output:
-    directory: out_{name}
-    series: {{interval: 0.05}}
-dem:
-  gravity: [0, 0, 0]
-  periodic: xyz
-  output: {{directory: out_{name}}}
-shapes:
-  - {shape}
-bodies:
-  - shape: s
-    position: {[c * DX / 2 for c in BOX]}
-    density: 1.0e12
-coupling:
-  output_interval: 0.05
-"""
 
 
 def main():
@@ -99,18 +65,14 @@ def main():
             shape, radius = shapes[case]
             name = f"cuboid_{case}_{axis}"
             path = os.path.join(out, name + ".yaml")
+            g = [0.0, 0.0, 0.0]
+            g["xyz".index(axis)] = 1.0e-4
             with open(path, "w") as f:
-                f.write(scene_text(name, axis, shape, radius))
-            wall, _ = run.run(args.build, path, 1, 1, timeout=600)
-            rows = io.read_trace_by_body(io.trace_path(path))[0]
-            series = io.read_rows(io.series_path(path))
-            tail, st = rows[-len(rows) // 5:], series[-len(series) // 5:]
-            force = sum(abs(r["f" + axis]) for r in tail) / len(tail)
-            u = sum(abs(r["mean_u" + axis + "_m_s"]) for r in st) / len(st)
-            mid = abs(rows[len(rows) // 2]["f" + axis])
-            print(f"{name}: F = {force:.6g} N (change since mid-run {100 * (force - mid) / mid:+.3f}"
-                  f" %), U = {u:.6g} m/s, F/U = {force / u:.6g} N s/m, wall {wall:.1f} s",
-                  flush=True)
+                f.write(fixed_body.scene_text(name, [c * DX for c in BOX], DX, 0.6, radius, shape,
+                                              g, 3.0, 0.05))
+            force, u, change, wall = fixed_body.drag(args.build, path, axis)
+            print(f"{name}: F = {force:.6g} N (change since mid-run {100 * change:+.3f} %), "
+                  f"U = {u:.6g} m/s, F/U = {force / u:.6g} N s/m, wall {wall:.1f} s", flush=True)
     print(f"stl_scaled: the earlier mesh scale 1 - offset S / (3 V) = {scale_old:.5f}")
 
 

@@ -20,7 +20,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from lbdem import io, run  # noqa: E402
+from lbdem import fixed_body  # noqa: E402
 
 ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
 ap.add_argument("--build", required=True)
@@ -55,40 +55,6 @@ torus_stl(stl)
 def scale_old(offset):
     return 1 - offset * 2 / (3 * TUBE)
 
-# dem.neighbor_skin: LAMMPS's rigid/small needs the ghost cutoff to reach the whole clump;
-# the default (clump extent + half a sphere radius) falls short for a ring (its centroid lies
-# in the hole).
-def scene(name, dx, tau, radius, scale):
-    return f"""name: {name}
-time: {{end: 1.5, progress_interval: 30}}
-fluid:
-  domain: {list(BOX)}
-  dx: {dx}
-  viscosity: 1.0e-6
-  density: 1000
-  tau: {tau}
-  hydrodynamic_radius: {radius}
-  characteristic_velocity: 2.0e-5
-  characteristic_length: 4.0e-4
-  body_force: [1.0e-4, 0, 0]
-  boundaries: {{x_min: periodic, x_max: periodic, y_min: periodic, y_max: periodic, z_min: periodic, z_max: periodic}}
-  output:
-    directory: out_{name}
-    series: {{interval: 0.02}}
-dem:
-  gravity: [0, 0, 0]
-  periodic: xyz
-  neighbor_skin: 6.0e-4
-  output: {{directory: out_{name}}}
-shapes:
-  - {{name: s, kind: stl, file: {stl}, scale: {scale!r}}}
-bodies:
-  - shape: s
-    position: {[c / 2 for c in BOX]}
-    density: 1.0e12
-coupling:
-  output_interval: 0.02
-"""
 # case: name -> (dx, tau, radius, scale); the band's excess in cells (band_calibration.cpp).
 EXC = {0.6: 0.346, 1.0: -0.130}
 defs = {}
@@ -102,14 +68,8 @@ for case in CASES:
     dx, tau, radius, scale = defs[case]
     path = os.path.join(HERE, case + ".yaml")
     with open(path, "w") as f:
-        f.write(scene(case, dx, tau, radius, scale))
-    wall, _ = run.run(BUILD, path, 1, 1, timeout=400)
-    rows = io.read_trace_by_body(io.trace_path(path))[0]
-    series = io.read_rows(io.series_path(path))
-    tail, st = rows[-len(rows) // 5:], series[-len(series) // 5:]
-    fd = sum(abs(r["fx"]) for r in tail) / len(tail)
-    u = sum(abs(r["mean_ux_m_s"]) for r in st) / len(st)
-    mid = abs(rows[len(rows) // 2]["fx"])
-    u_mid = abs(series[len(series) // 2]["mean_ux_m_s"])
+        shape = "{name: s, kind: stl, file: %s, scale: %r}" % (stl, scale)
+        f.write(fixed_body.scene_text(case, BOX, dx, tau, radius, shape, [1.0e-4, 0, 0], 1.5, 0.02))
+    fd, u, change, wall = fixed_body.drag(BUILD, path, "x", timeout=400)
     print(f"{case}: dx {dx:g} tau {tau} {radius} scale {scale:.5f}: F/U = {fd / u:.6g} N s/m "
-          f"(U change since mid-run {100 * (u - u_mid) / u_mid:+.3f} %), wall {wall:.1f} s", flush=True)
+          f"(F change since mid-run {100 * change:+.3f} %), wall {wall:.1f} s", flush=True)

@@ -28,6 +28,15 @@ void Progress::update(std::int64_t step, double time) {
   }
   last_ = now;
   last_step_ = step;
+  if (lines_++ == 0) {
+    first_line_ = now;
+    first_line_step_ = step;
+  }
+}
+
+double Progress::steps_per_s_after_first_line() const {
+  const double s = std::chrono::duration<double>(last_ - first_line_).count();
+  return lines_ >= 2 && s > 0 ? double(last_step_ - first_line_step_) / s : 0.0;
 }
 
 }  // namespace lbdem

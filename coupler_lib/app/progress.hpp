@@ -15,6 +15,9 @@ class Progress {
            double cells_per_step = 0);
   // Cheap to call every step: looks at the clock only every few calls.
   void update(std::int64_t step, double time);
+  // Steps per second from the first progress line to the last (the first interval is the
+  // warm-up: caches, first embedding, set-up runs); 0 with fewer than two lines.
+  double steps_per_s_after_first_line() const;
 
  private:
   using Clock = std::chrono::steady_clock;
@@ -22,8 +25,9 @@ class Progress {
   double interval_;
   double end_;
   double cells_;
-  Clock::time_point start_, last_;
-  std::int64_t last_step_ = 0;
+  Clock::time_point start_, last_, first_line_;
+  std::int64_t last_step_ = 0, first_line_step_ = 0;
+  int lines_ = 0;
 };
 
 }  // namespace lbdem

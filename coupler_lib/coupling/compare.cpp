@@ -4,6 +4,9 @@
 #include <cstdio>
 #include <cstring>
 #include <functional>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace lbdem {
@@ -82,6 +85,23 @@ std::optional<std::string> first_mismatch(std::int64_t step, std::span<const Bod
   static const std::vector<Field> fields = {{"f", 3, [l](const void* p) { return l(p)->f; }},
                                             {"t", 3, [l](const void* p) { return l(p)->t; }}};
   return compare(step, recorded, replayed, fields, load_shape);
+}
+
+std::vector<BodyLoad> loads_of(std::span<const std::int64_t> owned,
+                               std::span<const BodyLoad> recorded, const std::string& source,
+                               std::int64_t step) {
+  std::unordered_map<std::int64_t, const BodyLoad*> by_id;
+  for (const BodyLoad& l : recorded) by_id.emplace(l.id, &l);
+  std::vector<BodyLoad> mine;
+  mine.reserve(owned.size());
+  for (std::int64_t id : owned) {
+    const auto it = by_id.find(id);
+    if (it == by_id.end())
+      throw std::runtime_error(source + ": no load recorded for body " + std::to_string(id) +
+                               " at step " + std::to_string(step));
+    mine.push_back(*it->second);
+  }
+  return mine;
 }
 
 }  // namespace lbdem

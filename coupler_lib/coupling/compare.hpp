@@ -4,6 +4,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "coupler_lib/coupling/packets.hpp"
 
@@ -16,5 +17,12 @@ std::optional<std::string> first_mismatch(std::int64_t step, std::span<const Bod
                                           std::span<const BodyState> replayed);
 std::optional<std::string> first_mismatch(std::int64_t step, std::span<const BodyLoad> recorded,
                                           std::span<const BodyLoad> replayed);
+
+// The recorded loads of the bodies `owned`, in that order, from all the loads `recorded` at a
+// step (a recording or a DEM journal, named `source` in the error). Throws std::runtime_error
+// when a body has none.
+std::vector<BodyLoad> loads_of(std::span<const std::int64_t> owned,
+                               std::span<const BodyLoad> recorded, const std::string& source,
+                               std::int64_t step);
 
 }  // namespace lbdem

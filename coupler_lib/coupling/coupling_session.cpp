@@ -1,7 +1,6 @@
 #include "coupler_lib/coupling/coupling_session.hpp"
 
 #include <spdlog/spdlog.h>
-#include <sys/resource.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -38,12 +37,6 @@ const char* end_word(SessionEnd e) {
       return "unstable";
   }
   return "?";
-}
-
-double max_rss_mib() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return double(u.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
 }
 
 }  // namespace

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <stdexcept>
-#include <unordered_map>
 
 #include "coupler_lib/coupling/compare.hpp"
 
@@ -60,19 +59,7 @@ void JournalDemTransport::send_states(std::int64_t step, std::span<const BodySta
 }
 
 std::vector<std::vector<BodyLoad>> JournalDemTransport::receive_loads(std::int64_t step) {
-  const std::vector<BodyLoad> all = reader_.loads(step);
-  std::unordered_map<std::int64_t, const BodyLoad*> by_id;
-  for (const BodyLoad& l : all) by_id.emplace(l.id, &l);
-  std::vector<BodyLoad> mine;
-  mine.reserve(owned_.size());
-  for (std::int64_t id : owned_) {
-    const auto it = by_id.find(id);
-    if (it == by_id.end())
-      throw std::runtime_error(path_ + ": no load journalled for body " + std::to_string(id) +
-                               " at step " + std::to_string(step));
-    mine.push_back(*it->second);
-  }
-  return {mine};
+  return {loads_of(owned_, reader_.loads(step), path_, step)};
 }
 
 }  // namespace lbdem

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <stdexcept>
-#include <unordered_map>
 
 #include "coupler_lib/coupling/compare.hpp"
 #include "coupler_lib/coupling/reduce.hpp"
@@ -131,18 +130,7 @@ std::vector<std::vector<BodyLoad>> ReplayDemTransport::receive_loads(std::int64_
   std::vector<BodyLoad> all;
   if (source_.rank() == 0) all = source_.reader()->loads(step);
   broadcast(all, 0, source_.side());
-  std::unordered_map<std::int64_t, const BodyLoad*> by_id;
-  for (const BodyLoad& l : all) by_id.emplace(l.id, &l);
-  std::vector<BodyLoad> mine;
-  mine.reserve(owned_.size());
-  for (std::int64_t id : owned_) {
-    const auto it = by_id.find(id);
-    if (it == by_id.end())
-      throw std::runtime_error(source_.path() + ": no load recorded for body " +
-                               std::to_string(id) + " at step " + std::to_string(step));
-    mine.push_back(*it->second);
-  }
-  return {mine};
+  return {loads_of(owned_, all, source_.path(), step)};
 }
 
 }  // namespace lbdem

@@ -1,5 +1,7 @@
 #include "coupler_lib/coupling/run_summary.hpp"
 
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <numeric>
@@ -38,6 +40,12 @@ double max_over_mean(const std::vector<double>& v) {
   if (v.empty()) return 1;
   const double mean = std::accumulate(v.begin(), v.end(), 0.0) / double(v.size());
   return mean > 0 ? *std::max_element(v.begin(), v.end()) / mean : 1;
+}
+
+double max_rss_mib() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return double(u.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
 }
 
 std::string run_summary_json(const RunSummary& s) {
@@ -94,7 +102,9 @@ std::string run_summary_json(const RunSummary& s) {
 }
 
 std::string run_summary_path(const Scene& scene, const std::string& side) {
-  std::filesystem::path dir(scene.dem ? scene.dem->output.directory : std::string("."));
+  std::filesystem::path dir(scene.dem     ? scene.dem->output.directory
+                            : scene.fluid ? scene.fluid->output.directory
+                                          : std::string("."));
   if (dir.is_relative()) dir = std::filesystem::path(scene.file).parent_path() / dir;
   return (dir / (scene.name + "_" + side + "_summary.json")).lexically_normal().string();
 }

@@ -1,8 +1,10 @@
 #pragma once
-// The run summary: one JSON file per program at the end of a coupled run, for scripts
-// (tools/lbdem/rundir.py opens it) and for comparing runs without parsing log lines.
+// The run summary: one JSON file per program at the end of a coupled run, and fluid_app's at
+// the end of a fluid-only run, for scripts (tools/lbdem/rundir.py opens it) and for comparing
+// runs without parsing log lines.
 //
 //   <dem.output.directory>/<scene name>_<side>_summary.json
+//   <fluid.output.directory>/<scene name>_fluid_summary.json   (no bodies, fluid.output given)
 //
 // It holds the scene (file, fingerprint), the program and version, the rank counts of both
 // programs, the steps run (first, last, of the schedule), how the run ended and its exit
@@ -33,6 +35,7 @@ RankTable gather_per_rank(const std::vector<std::string>& names, const std::vect
                           MPI_Comm comm);
 
 double max_over_mean(const std::vector<double>& v);  // 1 for an empty or all-zero row
+double max_rss_mib();                                // this process's peak resident memory, MiB
 
 struct RunSummary {
   std::string program, side, scene_file, version, end, last_checkpoint;

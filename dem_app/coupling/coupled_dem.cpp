@@ -166,6 +166,11 @@ int run_coupled_dem(AppContext& ctx) {
     session.advance(trouble.empty() ? 0 : kBodiesUnstable);
   }
   session.count("bodies_owned", double(owned.size()));
+  double spheres = 0;  // of the owned bodies' clumps (without LAMMPS's helper spheres)
+  for (const BodyState& b : owned)
+    spheres += double(setup.shapes[static_cast<size_t>(b.shape)].clump.size());
+  session.count("clump_spheres", spheres);
+  session.count("substeps", double(schedule.dem_substeps));
   session.count("atoms", double(engine.local_atoms()));
   session.count("ghost_atoms", double(engine.ghost_atoms()));
   const LoadTraffic& traffic = engine.load_traffic();

@@ -27,6 +27,29 @@ double largest_sphere_radius(const DemSetup& setup) {
 
 }  // namespace
 
+double rigid_small_extent(const DemSetup& setup) {
+  double extent = 0;
+  for (const auto& b : setup.bodies) {
+    const Clump& clump = setup.shapes[static_cast<size_t>(b.shape)].clump;
+    const Eigen::Matrix3d rot = to_eigen(b.orientation).normalized().toRotationMatrix();
+    // The sphere centres exactly as lammps_data_file writes them.
+    std::vector<Eigen::Vector3d> x;
+    for (const auto& c : clump.centers) x.push_back(to_eigen(b.position) + rot * c);
+    Eigen::Vector3d lo = x[0], hi = x[0];
+    for (const auto& xi : x) {
+      lo = lo.cwiseMin(xi);
+      hi = hi.cwiseMax(xi);
+    }
+    const Eigen::Vector3d centre = 0.5 * (lo + hi);
+    // The first sphere (smallest tag) among the nearest ones owns the body.
+    size_t owner = 0;
+    for (size_t k = 1; k < x.size(); ++k)
+      if ((x[k] - centre).squaredNorm() < (x[owner] - centre).squaredNorm()) owner = k;
+    for (const auto& xi : x) extent = std::max(extent, (xi - x[owner]).norm());
+  }
+  return extent;
+}
+
 Clump clump_for_lammps(const Clump& clump) {
   Clump c = clump;
   if (c.centers.size() == 1) {
@@ -125,7 +148,10 @@ std::vector<std::string> lammps_setup_commands(const DemSetup& setup, double dt,
                 std::to_string(kLoadColumns));
   c.push_back("read_data " + data_path + " add append fix prop NULL Molecules");
 
-  double extent = 0;
+  // Ghost atoms must reach a whole body: rigid/small checks its own extent (from the owning
+  // sphere) against the ghost cutoff; the clump's reach from the centroid is the older bound,
+  // kept where it is the larger so that those inputs stay as they were.
+  double extent = rigid_small_extent(setup);
   for (const auto& b : setup.bodies)
     extent = std::max(extent, clump_extent(setup.shapes[static_cast<size_t>(b.shape)]));
   const double skin = p.neighbor_skin > 0 ? p.neighbor_skin : 0.5 * largest_sphere_radius(setup);
@@ -133,7 +159,6 @@ std::vector<std::string> lammps_setup_commands(const DemSetup& setup, double dt,
   if (p.lubrication.enabled)
     extent = std::max(extent, 2 * largest_sphere_radius(setup) + p.lubrication.cutoff);
   s = precise();
-  // Ghost atoms must reach a whole body (rigid/small checks extent <= ghost cutoff).
   s << "comm_modify vel yes cutoff " << extent + skin;
   c.push_back(s.str());
   c.push_back("pair_style granular");

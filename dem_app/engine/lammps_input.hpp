@@ -18,6 +18,15 @@ namespace lbdem {
 // the centre of mass exactly with weights of order one.
 Clump clump_for_lammps(const Clump& clump);
 
+// The extent LAMMPS's rigid/small checks against the ghost cutoff ("Rigid body extent >
+// ghost cutoff"), largest over the bodies in their current poses: it makes the sphere nearest
+// the centre of the bounding box of a body's sphere centres (smallest tag on a tie) the
+// body's owner and needs every sphere centre within the ghost cutoff of it. That is not the
+// clump's reach from the centroid (clump_extent): for a ring the owner sits on the ring and
+// the extent is nearly the ring's diameter. `setup` holds the clumps LAMMPS gets
+// (clump_for_lammps).
+double rigid_small_extent(const DemSetup& setup);
+
 std::string lammps_data_file(const DemSetup& setup);
 // `dt`: LAMMPS's set-up run leaves gravity out of the first half-kick (the rigid fix's
 // `gravity` keyword acts from the first step on), which would shift every trajectory by

@@ -270,6 +270,7 @@ int run_typed(AppContext& ctx) {
   }
   if (session.end() == SessionEnd::completed) feed.finish(session.step());
   count_work(session, solver, scene.fluid->covered_cell_weight);
+  session.count("steps_per_s", run.steps_per_s_after_first_line());
   const int rc = watch.finish();
   const int end = session.finish(coupler->times());
   if (end != 0) return end;

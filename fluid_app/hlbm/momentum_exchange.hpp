@@ -56,14 +56,6 @@ std::array<double, 3> lever_arm(const Subdomain& sub, const PorousBody<T>& b,
   return r;
 }
 
-// u_p = v + w x r (docs/method.md Eq. (7)), lattice units.
-template <class T>
-std::array<double, 3> solid_velocity(const PorousBody<T>& b, const std::array<double, 3>& r) {
-  return {double(b.velocity[0]) + double(b.omega[1]) * r[2] - double(b.omega[2]) * r[1],
-          double(b.velocity[1]) + double(b.omega[2]) * r[0] - double(b.omega[0]) * r[2],
-          double(b.velocity[2]) + double(b.omega[0]) * r[1] - double(b.omega[1]) * r[0]};
-}
-
 // Force and torque on body k from the boundary links of interior cell `cell`.
 // f(i, cell) returns the post-stream population i (fluid_app/lattice/d3q19.hpp order).
 template <class T, class Populations>

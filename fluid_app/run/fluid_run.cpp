@@ -1,11 +1,14 @@
 #include "fluid_app/run/fluid_run.hpp"
 
+#include "coupler_lib/coupling/coupling_times.hpp"
 #include "coupler_lib/coupling/schedule.hpp"
 #include "fluid_app/parallel/balance.hpp"
+#include "fluid_app/run/fluid_summary.hpp"
 #include "fluid_app/run/run_watch.hpp"
 
 #include <spdlog/fmt/fmt.h>
 
+#include <chrono>
 #include <cmath>
 
 namespace lbdem {
@@ -97,12 +100,33 @@ namespace {
 
 template <class T>
 int run_typed(AppContext& ctx) {
+  const auto started = std::chrono::steady_clock::now();
   FluidRun<T> run(ctx);
   RunWatch<T> watch(ctx, run);  // output, stability watch, validation
   run.start();
-  while (!run.done() && !watch.stopped()) run.step();
+  FluidRunFigures f;
+  while (!run.done() && !watch.stopped()) {
+    const auto start = std::chrono::steady_clock::now();
+    const double cpu_start = thread_cpu_seconds();
+    run.step();
+    f.step_wall_s +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    f.step_cpu_s += thread_cpu_seconds() - cpu_start;
+  }
   ctx.log->info("fluid run finished after {} steps", run.solver().steps());
-  return watch.finish();
+  const int rc = watch.finish();
+  // Like every other file of a fluid-only run, only when the scene asks for output (a scene
+  // run in place must not leave files beside itself).
+  if (run.params().output.writes_files()) {
+    f.steps = run.solver().steps();
+    f.cells = double(run.solver().box().interior_cells());
+    f.steps_per_s = run.steps_per_s_after_first_line();
+    f.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    f.exit_status = rc;
+    f.unstable = watch.stopped();
+    write_fluid_summary(ctx, f);
+  }
+  return rc;
 }
 
 }  // namespace

@@ -56,6 +56,7 @@ class FluidRun {
   void add_observer(Observer o) { observers_.push_back(std::move(o)); }
   void start();  // call once before the first step: observers see the initial state
   void step();   // the solver's step, the controller's update, the observers
+  double steps_per_s_after_first_line() const { return progress_->steps_per_s_after_first_line(); }
 
  private:
   AppContext& ctx_;

@@ -322,7 +322,7 @@ std::array<T, 3> FluidSolver<T>::velocity(CellIndex cell) const {
   if (pf.active && pf.d[cell] < 1.0f) {
     const PorousBody<T> b = pf.body[cell] >= 0 ? pf.bodies[pf.body[cell]] : PorousBody<T>{};
     const auto p = m.box.coords(cell);
-    T r[3];
+    std::array<T, 3> r;
     for (int k = 0; k < 3; ++k) {
       const bool per = m.dec.periodic(k);
       r[k] = T(m.box.offset[k] + p[k] - 1) + T(0.5) -
@@ -333,9 +333,7 @@ std::array<T, 3> FluidSolver<T>::velocity(CellIndex cell) const {
         r[k] += r[k] < T(-0.5) * len ? len : T(0);
       }
     }
-    const T up[3] = {b.velocity[0] + b.omega[1] * r[2] - b.omega[2] * r[1],
-                     b.velocity[1] + b.omega[2] * r[0] - b.omega[0] * r[2],
-                     b.velocity[2] + b.omega[0] * r[1] - b.omega[1] * r[0]};
+    const std::array<T, 3> up = solid_velocity(b, r);
     const T pen = T(1) - T(pf.d[cell]);
     for (int k = 0; k < 3; ++k) u[k] += T(0.5) * pen * (up[k] - j[k] / rho);
   }

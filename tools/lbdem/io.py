@@ -40,6 +40,18 @@ def dem_output_dir(scene_path, scene=None):
     return resolve(scene_path, s.get("dem", {}).get("output", {}).get("directory", "."))
 
 
+def summary_path(scene_path, side, scene=None):
+    """The run summary of `side` ("fluid" or "dem"), where the programs write it
+    (coupler_lib/coupling/run_summary.cpp): in dem.output.directory, or in fluid.output.directory
+    for a scene without bodies."""
+    s = scene or load_scene(scene_path)
+    if "dem" in s:
+        folder = dem_output_dir(scene_path, s)
+    else:
+        folder = resolve(scene_path, s["fluid"].get("output", {}).get("directory", "."))
+    return os.path.join(folder, f"{s['name']}_{side}_summary.json")
+
+
 def trace_path(scene_path, scene=None):
     s = scene or load_scene(scene_path)
     return os.path.join(dem_output_dir(scene_path, s), s["name"] + "_bodies.csv")

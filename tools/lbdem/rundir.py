@@ -26,8 +26,7 @@ class Run:
     def summary(self, side):
         """The run summary one program wrote at its end (`side`: "fluid" or "dem"): steps, how
         the run ended, wall time, time per step by part, per-rank counters, load imbalance."""
-        path = os.path.join(self.directory, f"{self.name}_{side}_summary.json")
-        with open(path) as f:
+        with open(io.summary_path(self.scene_path, side, self.scene)) as f:
             return json.load(f)
 
     @property

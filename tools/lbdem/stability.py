@@ -54,7 +54,7 @@ CASES = {
 VALIDATION = re.compile(r"L2 relative velocity error (\S+),")
 
 # The bound on each case's computed error (the measure of CASES), about 1.5-2x the value
-# measured in the run of 2 Dec 2026 08:08-08:15 UTC (docs/stability.md, "Bounds"; policy:
+# measured (docs/stability.md, "Outcomes"; policy:
 # docs/testing.md "Tolerance policy"). A case that computes a number must stay within its
 # bound; a case whose measure yields no number (finite-only checks, refusals, diagnoses) has
 # none.

@@ -54,14 +54,15 @@ TEST_P(Restitution, MeasuredMatchesRequested) {
   test::report(name, what, error, c.tolerance, timer.seconds());
   // The map is exact for the continuous Hertz-Tsuji law; what remains is the time
   // discretization of the contact: up to 0.8 % at the paper's dt = 0.05 t_R (a contact then
-  // lasts ~30-60 steps), below 0.2 % at 0.01 t_R, 0.05 % at 0.002 t_R (measured).
+  // lasts ~30-60 steps), below 0.2 % at 0.01 t_R, 0.05 % at 0.002 t_R (measured). Tolerances
+  // 1.2 % and 0.2 %: 1.5x and 2x the largest error at each step (docs/testing.md).
   EXPECT_LT(error, c.tolerance);
 }
 
 INSTANTIATE_TEST_SUITE_P(Dem, Restitution,
-                         ::testing::Values(Case{0.5, 0.05, 0.05, 1e-2}, Case{0.5, 0.2, 0.05, 1e-2},
-                                           Case{0.5, 1.0, 0.05, 1e-2}, Case{0.9, 0.05, 0.05, 1e-2},
-                                           Case{0.9, 0.2, 0.05, 1e-2}, Case{0.9, 1.0, 0.05, 1e-2},
+                         ::testing::Values(Case{0.5, 0.05, 0.05, 1.2e-2}, Case{0.5, 0.2, 0.05, 1.2e-2},
+                                           Case{0.5, 1.0, 0.05, 1.2e-2}, Case{0.9, 0.05, 0.05, 1.2e-2},
+                                           Case{0.9, 0.2, 0.05, 1.2e-2}, Case{0.9, 1.0, 0.05, 1.2e-2},
                                            Case{0.5, 0.05, 0.01, 2e-3}, Case{0.5, 1.0, 0.01, 2e-3},
                                            Case{0.9, 0.05, 0.01, 2e-3}, Case{0.9, 1.0, 0.01, 2e-3}),
                          [](const auto& p) {

@@ -37,6 +37,19 @@ void expect_same_field(const PorousField<double>& a, const PorousField<double>& 
   }
 }
 
+// One step of both fields: the incremental update and a full recomputation from the same states
+// must give the same field, with no cell inside two bodies. Adds the update's counts.
+void update_both(BodyField<double>& inc, BodyField<double>& full, const PorousField<double>& fi,
+                 const PorousField<double>& ff, const std::vector<BodyState>& states, int step,
+                 std::size_t& evaluations, std::size_t& scans) {
+  const UpdateStats s = inc.update(states);
+  full.update(states, UpdateMode::full);
+  evaluations += s.evaluated;
+  scans += s.full_scans;
+  EXPECT_EQ(s.interior_conflicts, 0u) << "step " << step;
+  expect_same_field(fi, ff, step);
+}
+
 void incremental_equals_full(PorosityLookup lookup) {
   // A rotating cube and a sphere cross the periodic boundary in x, the block boundaries of a
   // rank holding x in [5, 22) of 40 cells, pass close to each other, one leaves and comes
@@ -60,12 +73,7 @@ void incremental_equals_full(PorosityLookup lookup) {
     for (const Motion& b : m)
       if (!(b.id == 5 && step >= 30 && step < 34)) states.push_back(b.packet());  // 5 away
     if (step == 50) m[1].x += Eigen::Vector3d(3, 0, 0);  // a jump of 3 cells
-    const UpdateStats s = inc.update(states);
-    full.update(states, UpdateMode::full);
-    evaluations += s.evaluated;
-    full_scans += s.full_scans;
-    EXPECT_EQ(s.interior_conflicts, 0u) << "step " << step;
-    expect_same_field(fi, ff, step);
+    update_both(inc, full, fi, ff, states, step, evaluations, full_scans);
     if (::testing::Test::HasFatalFailure()) return;
     for (Motion& b : m) b.advance();
   }
@@ -113,12 +121,7 @@ void small_random_moves_equal_full(PorosityLookup lookup) {
   for (int step = 0; step < 150; ++step) {
     std::vector<BodyState> states;
     for (const Motion& b : m) states.push_back(b.packet());
-    const UpdateStats s = inc.update(states);
-    full.update(states, UpdateMode::full);
-    evaluations += s.evaluated;
-    scans += s.full_scans;
-    EXPECT_EQ(s.interior_conflicts, 0u) << "step " << step;
-    expect_same_field(fi, ff, step);
+    update_both(inc, full, fi, ff, states, step, evaluations, scans);
     if (::testing::Test::HasFatalFailure()) return;
     for (Motion& b : m) {
       b.v = random_vector(0.08);

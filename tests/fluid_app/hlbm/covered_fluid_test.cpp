@@ -105,11 +105,7 @@ Errors measure(const Body& body, Motion motion, int steps) {
         : motion == Motion::accelerating ? Eigen::Vector3d(dir * accel * (k + 1))
                                          : Eigen::Vector3d::Zero();
     if (motion == Motion::spinning) w = dir * (speed / body.shape.bounding_radius);
-    const double angle = w.norm() * k;
-    const Eigen::Quaterniond q = angle > 0
-                                     ? Eigen::Quaterniond(Eigen::AngleAxisd(angle, w.normalized()))
-                                     : Eigen::Quaterniond(1, 0, 0, 0);
-    const BodyState st = test::state(0, x * p.dx, q, v * p.units.velocity(), w / p.units.dt);
+    const BodyState st = test::moving_state(x, v, w, k, p.units);
     bodies.update({&st, 1});
     s.step();
     loads.loads(bodies, k);

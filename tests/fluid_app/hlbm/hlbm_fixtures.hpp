@@ -98,6 +98,18 @@ inline BodyState state(std::int64_t id, Eigen::Vector3d x, Eigen::Quaterniond q 
   return s;
 }
 
+// Body 0 at step k of a rigid motion given in lattice units: centre x (cells), velocity v (cells
+// per step), angular velocity w (rad per step) turned since step 0, as the SI state the coupler
+// delivers under the unit converter `units`.
+inline BodyState moving_state(const Eigen::Vector3d& x, const Eigen::Vector3d& v,
+                              const Eigen::Vector3d& w, int k, const UnitConverter& units) {
+  const double angle = w.norm() * k;
+  const Eigen::Quaterniond q = angle > 0
+                                   ? Eigen::Quaterniond(Eigen::AngleAxisd(angle, w.normalized()))
+                                   : Eigen::Quaterniond(1, 0, 0, 0);
+  return state(0, x * units.dx, q, v * units.velocity(), w / units.dt);
+}
+
 // Post-stream populations of every local cell (ghosts included), population-major.
 struct Populations {
   CellIndex cells = 0;

@@ -97,11 +97,7 @@ AuditResult audit(Motion motion, bool cube, double radius, double reynolds) {
   Eigen::Vector3d impulse_me = Eigen::Vector3d::Zero(), angular_me = Eigen::Vector3d::Zero();
   for (int k = 0; k < steps; ++k) {
     const Eigen::Vector3d x = x0 + v * k;
-    const double angle = w.norm() * k;
-    const Eigen::Quaterniond q = angle > 0
-                                     ? Eigen::Quaterniond(Eigen::AngleAxisd(angle, w.normalized()))
-                                     : Eigen::Quaterniond(1, 0, 0, 0);
-    const BodyState st = test::state(0, x * p.dx, q, v * p.units.velocity(), w / p.units.dt);
+    const BodyState st = test::moving_state(x, v, w, k, p.units);
     bodies.update({&st, 1});
     s.step();
     const BodyLoad me = momentum_exchange(bodies, populations_of(s), k).at(0);
