@@ -9,8 +9,8 @@ namespace lbdem {
 namespace {
 
 // The film the correction stands for lies between contact and h_c. Once the surfaces touch
-// (gap <= 0) the DEM contact begins and alone sets the collision: the correction is off there,
-// as in the reference codes (Kempe & Froehlich 2012; Costa et al. 2015; docs/lubrication.md).
+// (gap <= 0) the DEM contact begins and alone sets the collision: the correction is off there
+// (docs/lubrication.md, "At contact").
 bool in_film(const LubricationLaw& law, double gap) {
   return gap > 0 && gap < law.cutoff;
 }

@@ -15,8 +15,9 @@
 // The correction adds only what the lattice misses: lambda(max(h, h_min)) - lambda(h_c) for
 // h < h_c, zero beyond (Nguyen & Ladd 2002; Kempe & Froehlich 2012). It is continuous at h_c,
 // positive below it, held at its value at the roughness h_min for 0 < h < h_min, and zero once
-// the surfaces touch (h <= 0): there the DEM contact begins and alone sets the collision, as in
-// Kempe & Froehlich (2012) and Costa et al. (2015). The sliding parts below follow the same rule.
+// the surfaces touch (h <= 0): there the DEM contact begins and alone sets the collision, so its
+// restitution is not damped by a film that is no longer there (docs/lubrication.md, "At
+// contact"). The sliding parts below follow the same rule.
 
 namespace lbdem {
 
