@@ -3,6 +3,7 @@
 
     validate_lubrication.py approach --build build --scene S [--ranks 1:1] [--tolerance T]
     validate_lubrication.py bounce --build build --scene S [S ...] [--without] [--tolerance T]
+                                   [--min-gap-ratio R]
 
 approach: one sphere driven towards the lower wall (one body) or two equal spheres driven
 towards each other along z (two bodies), at constant speed. Reads the body trace, and for each
@@ -115,11 +116,12 @@ def cmd_approach(args):
     return 0
 
 
-def scene_without_correction(scene):
-    """A copy of the scene with dem.lubrication.enabled false, in runs/lubrication/<name>_off."""
+def scene_variant(scene, suffix, edit):
+    """A copy of the scene named <name>_<suffix>, changed by edit(yaml dict), in
+    runs/lubrication/<name>_<suffix>; returns its path."""
     s = io.read_scene_yaml(scene)  # written back as a variant; values come from the JSON
-    s["name"] = s["name"] + "_off"
-    s["dem"]["lubrication"]["enabled"] = False
+    s["name"] = s["name"] + "_" + suffix
+    edit(s)
     directory = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "runs",
                              "lubrication", s["name"])
     os.makedirs(directory, exist_ok=True)
@@ -128,6 +130,19 @@ def scene_without_correction(scene):
     with open(path, "w") as f:
         yaml.safe_dump(s, f)
     return path
+
+
+def scene_without_correction(scene):
+    """A copy of the scene with dem.lubrication.enabled false, in runs/lubrication/<name>_off."""
+    return scene_variant(scene, "off", lambda s: s["dem"]["lubrication"].update(enabled=False))
+
+
+def scene_with_min_gap_ratio(scene, ratio):
+    """A copy of the scene with h_min = ratio x the sphere's radius (the roughness relative to
+    the radius, docs/lubrication.md "Minimum gap"), in runs/lubrication/<name>_hmin<ratio>."""
+    a = 0.5 * io.load_scene(scene)["shapes"][0]["diameter"]
+    return scene_variant(scene, f"hmin{ratio:g}",
+                         lambda s: s["dem"]["lubrication"].update(min_gap=float(ratio * a)))
 
 
 def restitution(scene, rows):
@@ -188,6 +203,8 @@ def cmd_bounce(args):
     print(f"{'case':>22} {'St':>7} {'U_in m/s':>9} {'e/e_dry':>8} {'contact':>8} "
           f"{'corr.only':>9} {'Legendre':>8} {'diff':>7} {'wall s':>7}")
     for scene in args.scene:
+        if args.min_gap_ratio:
+            scene = scene_with_min_gap_ratio(scene, args.min_gap_ratio)
         runs = [(scene, True)] + ([(scene_without_correction(scene), False)] if args.without
                                   else [])
         for path, corrected in runs:
@@ -240,6 +257,8 @@ def main():
     b.add_argument("--tolerance", type=float, default=1.0, help="on |e/e_dry - exp(-35/St)|")
     b.add_argument("--without", action="store_true", help="also run without the correction")
     b.add_argument("--no-run", action="store_true", help="analyse the existing traces only")
+    b.add_argument("--min-gap-ratio", type=float, default=0.0,
+                   help="run a copy of each scene with h_min = R x the sphere's radius")
     args = p.parse_args()
     lbdem_scene.use_build(args.build)  # values of scenes come from this build
     return {"approach": cmd_approach, "bounce": cmd_bounce}[args.cmd](args)

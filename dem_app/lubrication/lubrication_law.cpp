@@ -6,6 +6,17 @@
 
 namespace lbdem {
 
+namespace {
+
+// The film the correction stands for lies between contact and h_c. Once the surfaces touch
+// (gap <= 0) the DEM contact begins and alone sets the collision: the correction is off there
+// (docs/lubrication.md, "At contact").
+bool in_film(const LubricationLaw& law, double gap) {
+  return gap > 0 && gap < law.cutoff;
+}
+
+}  // namespace
+
 SqueezeCoefficients squeeze_coefficients(double a1, double a2) {
   if (a2 <= 0) return {1.0, 0.2};  // plane wall: the beta -> infinity limit
   const double b = a2 / a1, p = 1 + b;
@@ -17,7 +28,7 @@ double squeeze_lambda(const SqueezeCoefficients& g, double a1, double h) {
 }
 
 double lubrication_resistance(const LubricationLaw& law, double a1, double a2, double gap) {
-  if (gap >= law.cutoff) return 0;
+  if (!in_film(law, gap)) return 0;
   const SqueezeCoefficients g = squeeze_coefficients(a1, a2);
   const double h = std::max(gap, law.min_gap);
   return 6 * std::numbers::pi * law.viscosity * a1 *
@@ -25,7 +36,7 @@ double lubrication_resistance(const LubricationLaw& law, double a1, double a2, d
 }
 
 SlidingResistance wall_sliding_resistance(const LubricationLaw& law, double a, double gap) {
-  if (gap >= law.cutoff) return {};
+  if (!in_film(law, gap)) return {};
   // ln(a / h) - ln(a / h_c)
   const double l = std::log(law.cutoff / std::max(gap, law.min_gap));
   const double mu = law.viscosity, pi = std::numbers::pi;
@@ -35,7 +46,7 @@ SlidingResistance wall_sliding_resistance(const LubricationLaw& law, double a, d
 
 PairSlidingResistance pair_sliding_resistance(const LubricationLaw& law, double a1, double a2,
                                               double gap) {
-  if (gap >= law.cutoff) return {};
+  if (!in_film(law, gap)) return {};
   const double l = std::log(law.cutoff / std::max(gap, law.min_gap));
   const double mu = law.viscosity, pi = std::numbers::pi;
   const double b = a2 / a1, p = 1 + b;

@@ -14,7 +14,10 @@
 //
 // The correction adds only what the lattice misses: lambda(max(h, h_min)) - lambda(h_c) for
 // h < h_c, zero beyond (Nguyen & Ladd 2002; Kempe & Froehlich 2012). It is continuous at h_c,
-// positive below it, and finite at contact and overlap (saturated at the roughness h_min).
+// positive below it, held at its value at the roughness h_min for 0 < h < h_min, and zero once
+// the surfaces touch (h <= 0): there the DEM contact begins and alone sets the collision, so its
+// restitution is not damped by a film that is no longer there (docs/lubrication.md, "At
+// contact"). The sliding parts below follow the same rule.
 
 namespace lbdem {
 
@@ -35,16 +38,18 @@ SqueezeCoefficients squeeze_coefficients(double a1, double a2);
 double squeeze_lambda(const SqueezeCoefficients& g, double a1, double h);
 
 // The correction's resistance c in N s/m: the force on sphere 1 is -c (v1 - v2) . n n, with n
-// the unit normal from sphere 1 towards sphere 2 (or the wall). Zero for gap >= h_c.
+// the unit normal from sphere 1 towards sphere 2 (or the wall). Zero for gap >= h_c and in
+// contact (gap <= 0).
 double lubrication_resistance(const LubricationLaw& law, double a1, double a2, double gap);
 
 // Sliding and rolling next to a plane wall (Goldman, Cox & Brenner 1967; O'Neill & Stewartson
 // 1967): the log-singular parts of the resistance of a sphere of radius a translating parallel
 // to the wall (6 pi mu a 8/15 ln(a/h)), rotating about an axis parallel to it
 // (8 pi mu a^3 2/5 ln(a/h)) and their coupling (6 pi mu a^2 2/15 ln(a/h) = 8 pi mu a^2 1/10
-// ln(a/h), the same both ways by reciprocity), each minus its value at h_c and held at h_min
-// like the normal part. With n the unit normal from the sphere towards the wall, U_t and W_t the
-// velocity and angular velocity parallel to the wall, the correction's force and torque are
+// ln(a/h), the same both ways by reciprocity), each minus its value at h_c, held at h_min and
+// zero in contact like the normal part. With n the unit normal from the sphere towards the wall,
+// U_t and W_t the velocity and angular velocity parallel to the wall, the correction's force and
+// torque are
 //   F = -translation U_t - coupling (W_t x n),   T = -coupling (n x U_t) - rotation W_t,
 // which dissipates U.A.U + 2 coupling W.(n x U) + W.C.W >= 0 (8/15 x 2/5 > (2/15)^2 x 6/8).
 // Rotation about the normal has no log singularity and is left to the lattice.
@@ -56,8 +61,8 @@ struct SlidingResistance {
 SlidingResistance wall_sliding_resistance(const LubricationLaw& law, double a, double gap);
 
 // Sliding and rolling of two spheres (Jeffrey & Onishi 1984, the near-contact forms of Y^A,
-// Y^B and Y^C; O'Neill & Majumdar 1970): the log-singular parts, each minus its value at h_c
-// and held at h_min. With beta = a2 / a1, L = ln(h_c / max(h, h_min)) and
+// Y^B and Y^C; O'Neill & Majumdar 1970): the log-singular parts, each minus its value at h_c,
+// held at h_min and zero in contact. With beta = a2 / a1, L = ln(h_c / max(h, h_min)) and
 //   gA = 4 beta (2 + beta + 2 beta^2) / (15 (1 + beta)^3),
 //   gB(beta) = -beta (4 + beta) / (5 (1 + beta)^2),
 //   gC(beta) = 2 beta / (5 (1 + beta)),  gC12 = 4 beta^2 / (5 (1 + beta)^4),

@@ -32,7 +32,7 @@ TEST(LubricationLaw, CoefficientsOfEqualSpheresAndOfAWall) {
   EXPECT_NEAR(big.g2, 0.2, 1e-5);
 }
 
-TEST(LubricationLaw, ZeroBeyondTheCutoffContinuousAtItSaturatedBelowTheMinimum) {
+TEST(LubricationLaw, ZeroBeyondTheCutoffContinuousAtItSaturatedBelowTheMinimumOffInContact) {
   const double a = 1e-3;
   EXPECT_EQ(lubrication_resistance(kLaw, a, a, kLaw.cutoff), 0.0);
   EXPECT_EQ(lubrication_resistance(kLaw, a, a, 2 * kLaw.cutoff), 0.0);
@@ -41,7 +41,10 @@ TEST(LubricationLaw, ZeroBeyondTheCutoffContinuousAtItSaturatedBelowTheMinimum) 
   EXPECT_LT(just_below, 1e-8 * lubrication_resistance(kLaw, a, a, 0.5 * kLaw.cutoff));
   const double at_min = lubrication_resistance(kLaw, a, 0.0, kLaw.min_gap);
   EXPECT_EQ(lubrication_resistance(kLaw, a, 0.0, 0.1 * kLaw.min_gap), at_min);
-  EXPECT_EQ(lubrication_resistance(kLaw, a, 0.0, -1e-5), at_min);  // overlapping contact
+  // Off once the surfaces touch: the DEM contact alone acts there (lubrication_law.hpp).
+  EXPECT_EQ(lubrication_resistance(kLaw, a, 0.0, 0.0), 0.0);
+  EXPECT_EQ(lubrication_resistance(kLaw, a, 0.0, -1e-5), 0.0);
+  EXPECT_EQ(lubrication_resistance(kLaw, a, a, -1e-5), 0.0);
   // Monotone in the gap.
   double last = at_min;
   for (double h = 2 * kLaw.min_gap; h < kLaw.cutoff; h *= 1.5) {
@@ -111,8 +114,14 @@ TEST(LubricationLaw, WallSlidingFollowsTheLogTermsAndDissipates) {
   EXPECT_EQ(wall_sliding_resistance(law, a, 2 * law.cutoff).rotation, 0.0);
   EXPECT_EQ(wall_sliding_resistance(law, a, 1e-9).translation,
             wall_sliding_resistance(law, a, law.min_gap).translation);
-  EXPECT_EQ(wall_sliding_resistance(law, a, -1e-6).coupling,
+  EXPECT_EQ(wall_sliding_resistance(law, a, 0.3 * law.min_gap).coupling,
             wall_sliding_resistance(law, a, law.min_gap).coupling);
+  for (double g : {0.0, -1e-6}) {  // in contact: off
+    const SlidingResistance c = wall_sliding_resistance(law, a, g);
+    EXPECT_EQ(c.translation, 0.0);
+    EXPECT_EQ(c.coupling, 0.0);
+    EXPECT_EQ(c.rotation, 0.0);
+  }
   EXPECT_GT(s.translation * s.rotation, s.coupling * s.coupling);
   EXPECT_GT(wall_sliding_resistance(law, a, 2e-6).translation, s.translation);
 }
@@ -137,18 +146,24 @@ TEST(LubricationLaw, PairSlidingCoefficientsOfEqualSpheresAndTheWallLimit) {
   EXPECT_NEAR(big.translation / w.translation, 1.0, 1e-5);
   EXPECT_NEAR(-big.coupling1 / w.coupling, 1.0, 1e-5);
   EXPECT_NEAR(big.rotation11 / w.rotation, 1.0, 1e-5);
-  // Zero at and beyond h_c; held below h_min and in overlap (the rotations exactly, the
+  // Zero at and beyond h_c and in contact; held below h_min (the rotations exactly, the
   // translation and couplings up to the distance factor s).
   EXPECT_EQ(pair_sliding_resistance(law, a, a, law.cutoff).translation, 0.0);
   EXPECT_EQ(pair_sliding_resistance(law, a, 2 * a, 2 * law.cutoff).rotation12, 0.0);
   const PairSlidingResistance at_min = pair_sliding_resistance(law, a, 2 * a, law.min_gap);
-  for (double g : {0.3 * law.min_gap, -1e-6}) {
+  for (double g : {0.3 * law.min_gap, 1e-3 * law.min_gap}) {
     const PairSlidingResistance r2 = pair_sliding_resistance(law, a, 2 * a, g);
     EXPECT_EQ(r2.rotation11, at_min.rotation11);
     EXPECT_EQ(r2.rotation12, at_min.rotation12);
     const double ratio = (3 * a + g) / (3 * a + law.min_gap);  // 1 / s relative to h_min
     EXPECT_NEAR(r2.translation * ratio * ratio / at_min.translation, 1.0, 1e-13);
     EXPECT_NEAR(r2.coupling2 * ratio / at_min.coupling2, 1.0, 1e-13);
+  }
+  for (double g : {0.0, -1e-6}) {  // in contact: off
+    const PairSlidingResistance c = pair_sliding_resistance(law, a, 2 * a, g);
+    EXPECT_EQ(c.translation, 0.0);
+    EXPECT_EQ(c.coupling1, 0.0);
+    EXPECT_EQ(c.rotation12, 0.0);
   }
 }
 
@@ -166,7 +181,7 @@ TEST(LubricationLaw, PairSlidingDissipatesAndConservesAngularMomentum) {
     return Vec3{scale * random(), scale * random(), scale * random()};
   };
   for (double beta : {0.1, 0.5, 1.0, 3.0, 40.0})
-    for (double gap : {-2e-6, 5e-7, 1e-5, 6e-5}) {
+    for (double gap : {2e-7, 5e-7, 1e-5, 6e-5}) {
       const double a2 = beta * a1, r = a1 + a2 + gap;
       const PairSlidingResistance res = pair_sliding_resistance(law, a1, a2, gap);
       for (int trial = 0; trial < 20; ++trial) {

@@ -48,8 +48,9 @@ def squeeze_coefficients(a1, a2):
 
 
 def correction(h, a, h_c, h_min, wall):
-    """The correction's force on one body in units of 6 pi mu a U (U: each body's speed)."""
-    if h >= h_c:
+    """The correction's force on one body in units of 6 pi mu a U (U: each body's speed); zero
+    at and beyond h_c and once the surfaces touch (h <= 0), like dem_app's."""
+    if h >= h_c or h <= 0:
         return 0.0
     g1, g2 = squeeze_coefficients(a, None if wall else a)
     lam = lambda x: g1 * a / x + g2 * math.log(a / x)  # noqa: E731
