@@ -189,14 +189,35 @@ template <class T, Forcing Mode, bool Sum>
       out[i] = feq + keep * (f[i] - feq);
     }
   } else {
-    const T uu = T(1.5) * (ux * ux + uy * uy + uz * uz);
-#pragma GCC unroll 19
-    for (int i = 0; i < Q; ++i) {
-      const T cv = c_dot(i, vx, vy, vz);
-      const T cu = c_dot(i, ux, uy, uz);
-      const T feq_v = T(w[i]) * rho * (T(1) + T(3) * cv + T(4.5) * cv * cv - vv);
-      const T feq_u = T(w[i]) * rho * (T(1) + T(3) * cu + T(4.5) * cu * cu - uu);
-      out[i] = feq_u + keep * (f[i] - feq_v);
+    // f*_i = f_i^eq(rho, u+) + keep (f_i - f_i^eq(rho, v)) (Eqs. (1), (2), (5) of
+    // docs/method.md) regrouped per cell, so that each population costs a few operations
+    // instead of two equilibria:
+    //   f*_i = keep f_i + w_i rho [A + 3 c_i.a + 9/2 c_i.M c_i],
+    //   a = u+ - keep v,   M = u+ u+^T - keep v v^T,   A = (1 - keep) - 3/2 (u+.u+ - keep v.v).
+    // c_i.M c_i is M_kk for an axis direction and M_kk + M_ll +- 2 M_kl for a diagonal one;
+    // i and its opposite share it and differ in the sign of c_i.a. Exact algebra, different
+    // round-off (docs/performance.md, "The porous kernel").
+    const T ax = ux - keep * vx, ay = uy - keep * vy, az = uz - keep * vz;
+    const T mxx = ux * ux - keep * (vx * vx), myy = uy * uy - keep * (vy * vy),
+            mzz = uz * uz - keep * (vz * vz);
+    const T mxy = ux * uy - keep * (vx * vy), mxz = ux * uz - keep * (vx * vz),
+            myz = uy * uz - keep * (vy * vz);
+    const T A = (T(1) - keep) - T(1.5) * (mxx + myy + mzz);
+    out[0] = T(w[0]) * rho * A + keep * f[0];
+#pragma GCC unroll 9
+    for (int i = 1; i <= 9; ++i) {
+      const T ca = c_dot(i, ax, ay, az);
+      T q = T(-0.0);  // c_i.M c_i
+      if (c[i][0] != 0) q += mxx;
+      if (c[i][1] != 0) q += myy;
+      if (c[i][2] != 0) q += mzz;
+      if (c[i][0] * c[i][1] != 0) q += T(2 * c[i][0] * c[i][1]) * mxy;
+      if (c[i][0] * c[i][2] != 0) q += T(2 * c[i][0] * c[i][2]) * mxz;
+      if (c[i][1] * c[i][2] != 0) q += T(2 * c[i][1] * c[i][2]) * myz;
+      const T b = A + T(4.5) * q;
+      const T wr = T(w[i]) * rho;
+      out[i] = wr * (b + T(3) * ca) + keep * f[i];
+      out[opposite(i)] = wr * (b - T(3) * ca) + keep * f[opposite(i)];
     }
   }
 }
@@ -265,10 +286,23 @@ inline void collide_row(const KernelArgs<T>& a, int x0, int len, int y, int z, F
       acc[m] += sum;
     }
   } else if constexpr (Mode == Forcing::porous) {
-    for (int k = 0; k < len; ++k) {
-      if (a.d[row + k] >= 1.0f) continue;
-      double* acc = a.exchange + kPenaltyTerms * std::size_t(a.body[row + k] + 1);
-      for (int m = 0; m < kPenaltyTerms; ++m) acc[m] += double(ex_row[m * ex_stride + k]);
+    // Per run of one body's cells (fluid cells between them do not end it), its sums are
+    // held in registers: the same additions in the same order as adding cell by cell.
+    for (int k = 0; k < len;) {
+      if (a.d[row + k] >= 1.0f) {
+        ++k;
+        continue;
+      }
+      const std::int32_t b = a.body[row + k];
+      double* acc = a.exchange + kPenaltyTerms * std::size_t(b + 1);
+      double sum[kPenaltyTerms];
+      for (int m = 0; m < kPenaltyTerms; ++m) sum[m] = acc[m];
+      for (; k < len; ++k) {
+        if (a.d[row + k] >= 1.0f) continue;
+        if (a.body[row + k] != b) break;
+        for (int m = 0; m < kPenaltyTerms; ++m) sum[m] += double(ex_row[m * ex_stride + k]);
+      }
+      for (int m = 0; m < kPenaltyTerms; ++m) acc[m] = sum[m];
     }
   }
 }
