@@ -80,6 +80,12 @@ struct KernelArgs {
   // Row scratch, 12 values per cell of the longest row (kPenaltyTerms planes of `row_len`).
   T* scratch = nullptr;
   int row_len = 0;
+  // The porous row's d, body index + 1 and node x coordinate (global, g + 1/2), per cell of
+  // the row, in the cell loop's own widths: with a float or int32 operand the vectorizer
+  // takes twice the cells per iteration, which spills registers and leaves long remainders.
+  T* row_d = nullptr;
+  std::int64_t* row_slot = nullptr;
+  T* row_x = nullptr;
 };
 
 namespace detail {
@@ -101,10 +107,9 @@ template <class T>
 
 // Always inlined: the cell loop vectorizes only with the cell's body in it.
 template <class T, Forcing Mode, bool Sum>
-[[gnu::always_inline]] inline void collide_cell(const KernelArgs<T>& a, CellIndex cell, int x,
-                                                int y, int z, const T (&f)[d3q19::Q],
-                                                T (&out)[d3q19::Q], FlowSums& s,
-                                                T (&ex)[kPenaltyTerms]) {
+[[gnu::always_inline]] inline void collide_cell(const KernelArgs<T>& a, int at, int y, int z,
+                                                const T (&f)[d3q19::Q], T (&out)[d3q19::Q],
+                                                FlowSums& s, T (&ex)[kPenaltyTerms]) {
   using namespace d3q19;
   T rho = 0, jx = 0, jy = 0, jz = 0;
 #pragma GCC unroll 19
@@ -124,10 +129,10 @@ template <class T, Forcing Mode, bool Sum>
     uz += a.force[2] * inv_rho;
   }
   if constexpr (Mode == Forcing::porous || Mode == Forcing::porous_one_body) {
-    const T dd = T(a.d[cell]);
+    const T dd = a.row_d[at];
     T bt[9];
     if constexpr (Mode == Forcing::porous) {
-      const int id = a.body[cell] + 1;
+      const std::int64_t id = a.row_slot[at];
 #pragma GCC unroll 9
       for (int m = 0; m < 9; ++m) bt[m] = a.table[m][id];
     } else {
@@ -135,8 +140,7 @@ template <class T, Forcing Mode, bool Sum>
       for (int m = 0; m < 9; ++m) bt[m] = a.row_body[m];
     }
     // Node position in global lattice coordinates (node g at g + 1/2), minimum image.
-    T r[3] = {T(a.box.offset[0] + x - 1) + T(0.5) - bt[0],
-              T(a.box.offset[1] + y - 1) + T(0.5) - bt[1],
+    T r[3] = {a.row_x[at] - bt[0], T(a.box.offset[1] + y - 1) + T(0.5) - bt[1],
               T(a.box.offset[2] + z - 1) + T(0.5) - bt[2]};
     // Centres are wrapped into [0, L) on periodic axes (by the solver), so |r| < L and one
     // conditional shift gives the minimum image (selects vectorize, floor does not).
@@ -256,7 +260,7 @@ inline void collide_row(const KernelArgs<T>& a, int x0, int len, int y, int z, F
     for (int i = 0; i < Q; ++i) fin[i] = src[i][k];
     FlowSums cs{};
     T ex[kPenaltyTerms];
-    collide_cell<T, Mode, Sum>(a, row + k, x0 + k, y, z, fin, fout, cs, ex);
+    collide_cell<T, Mode, Sum>(a, k, y, z, fin, fout, cs, ex);
     if constexpr (porous) {
 #pragma GCC unroll 12
       for (int m = 0; m < kPenaltyTerms; ++m) ex_row[m * ex_stride + k] = ex[m];
@@ -324,11 +328,17 @@ void collide_stream(const KernelArgs<T>& args, const CellRange& r, FlowSums& sum
   const int len = r.hi[0] - r.lo[0];
   FlowSums s{};
   std::vector<T> scratch;
+  std::vector<std::int64_t> slots;
   const bool uniform_force = a.force[0] != 0 || a.force[1] != 0 || a.force[2] != 0;
   if constexpr (Mode == Forcing::porous) {
-    scratch.resize(std::size_t(kPenaltyTerms) * std::size_t(len));
+    scratch.resize(std::size_t(kPenaltyTerms + 2) * std::size_t(len));
+    slots.resize(std::size_t(len));
     a.scratch = scratch.data();
     a.row_len = len;
+    a.row_d = a.scratch + std::size_t(kPenaltyTerms) * std::size_t(len);
+    a.row_x = a.row_d + len;
+    a.row_slot = slots.data();
+    for (int k = 0; k < len; ++k) a.row_x[k] = T(a.box.offset[0] + r.lo[0] + k - 1) + T(0.5);
   }
   for (int z = r.lo[2]; z < r.hi[2]; ++z) {
     for (int y = r.lo[1]; y < r.hi[1]; ++y) {
@@ -351,6 +361,8 @@ void collide_stream(const KernelArgs<T>& args, const CellRange& r, FlowSums& sum
           const bool p = d[k] < 1.0f;
           lo = p && body[k] < lo ? body[k] : lo;
           hi = p && body[k] > hi ? body[k] : hi;
+          a.row_d[k] = T(d[k]);
+          a.row_slot[k] = body[k] + 1;
         }
         if (lo == hi) {
           for (int m = 0; m < 9; ++m) a.row_body[m] = a.table[m][lo + 1];
