@@ -32,6 +32,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 #include "fluid_app/lattice/d3q19.hpp"
@@ -56,6 +57,10 @@ struct FlowSums {
   std::int64_t mass = 0;
   static constexpr double scale = 1073741824.0;  // 2^30 per lattice unit
 };
+
+// An integer of the width of T (the porous row's body slots, see KernelArgs::row_slot).
+template <class T>
+using SlotInt = std::conditional_t<sizeof(T) == 8, std::int64_t, std::int32_t>;
 
 template <class T>
 struct KernelArgs {
@@ -84,7 +89,7 @@ struct KernelArgs {
   // the row, in the cell loop's own widths: with a float or int32 operand the vectorizer
   // takes twice the cells per iteration, which spills registers and leaves long remainders.
   T* row_d = nullptr;
-  std::int64_t* row_slot = nullptr;
+  SlotInt<T>* row_slot = nullptr;
   T* row_x = nullptr;
 };
 
@@ -132,7 +137,7 @@ template <class T, Forcing Mode, bool Sum>
     const T dd = a.row_d[at];
     T bt[9];
     if constexpr (Mode == Forcing::porous) {
-      const std::int64_t id = a.row_slot[at];
+      const SlotInt<T> id = a.row_slot[at];
 #pragma GCC unroll 9
       for (int m = 0; m < 9; ++m) bt[m] = a.table[m][id];
     } else {
@@ -314,12 +319,13 @@ inline void collide_row(const KernelArgs<T>& a, int x0, int len, int y, int z, F
 }  // namespace detail
 
 // Update the cells of `r` (local coordinates, interior only). `Odd` selects the AA step kind.
-// With the porous field, a row without any cell of d < 1 takes the fluid path: the plain
-// variant without a uniform force (what a fluid-only run does), else the uniform-force one.
-// For d = 1 the shift (1 - d)(u_p - v) adds exactly zero, so the result is the same, and the
-// cost of bodies grows with the rows they touch, not with the domain. (A closed-form
-// f^eq(u+) - f^eq(v) instead of the two equilibria, and splitting porous rows into runs,
-// were measured no faster: docs/performance.md, "Porous kernel".)
+// With the porous field, a row without any cell of d < 1 takes the uniform-force variant (with
+// a zero force if there is none): for d = 1 the shift (1 - d)(u_p - v) adds exactly zero and
+// both variants share the regrouped collision, so a fluid cell gets the same bits whichever
+// path its row takes (and so for any decomposition), and the cost of bodies grows with the
+// rows they touch, not with the domain. (The plain variant, which a run without bodies and
+// force takes, rounds differently; splitting porous rows into runs was measured no faster:
+// docs/performance.md, "The porous kernel".)
 template <class T, bool Odd, Forcing Mode, bool Sum>
 void collide_stream(const KernelArgs<T>& args, const CellRange& r, FlowSums& sums) {
   // A private copy: the population stores cannot alias it, so its pointers and constants
@@ -328,8 +334,7 @@ void collide_stream(const KernelArgs<T>& args, const CellRange& r, FlowSums& sum
   const int len = r.hi[0] - r.lo[0];
   FlowSums s{};
   std::vector<T> scratch;
-  std::vector<std::int64_t> slots;
-  const bool uniform_force = a.force[0] != 0 || a.force[1] != 0 || a.force[2] != 0;
+  std::vector<SlotInt<T>> slots;
   if constexpr (Mode == Forcing::porous) {
     scratch.resize(std::size_t(kPenaltyTerms + 2) * std::size_t(len));
     slots.resize(std::size_t(len));
@@ -348,11 +353,7 @@ void collide_stream(const KernelArgs<T>& args, const CellRange& r, FlowSums& sum
         int solid = 0;
         for (int k = 0; k < len; ++k) solid += d[k] < 1.0f ? 1 : 0;
         if (solid == 0) {
-          if (uniform_force) {
-            detail::collide_row<T, Odd, Forcing::uniform, Sum>(a, r.lo[0], len, y, z, s);
-          } else {
-            detail::collide_row<T, Odd, Forcing::none, Sum>(a, r.lo[0], len, y, z, s);
-          }
+          detail::collide_row<T, Odd, Forcing::uniform, Sum>(a, r.lo[0], len, y, z, s);
           continue;
         }
         const std::int32_t* body = a.body + row;
