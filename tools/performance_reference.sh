@@ -25,7 +25,9 @@ step fluid_bench_np2 "${mpirun[@]}" -np 2 "$build/tools/fluid_bench" --porous
 step dem_bench "${mpirun[@]}" -np 1 "$build/tools/dem_bench" --cubes 1000 --phi 0.3 --steps 1000 \
   --substeps 10
 step porosity_bench "$build/tools/porosity_bench" "$scene" --updates 200 --lookup both
-step lattice_bench "$build/tools/lattice_bench" "$scene" --force --steps 100 --repeat 3
+step lattice_bench "$build/tools/lattice_bench" "$scene" --force --steps 20 --repeat 8
+step lattice_bench_spheres "$build/tools/lattice_bench" configs/bench/spheres967.yaml --force \
+  --steps 10 --repeat 4
 step coupled_bench /usr/bin/python3 tools/coupled_bench.py --build "$build" \
   --only cubes64_c100_particle_dt,fluid58,spheres967,fluid135
 echo "outputs in $out"

@@ -32,6 +32,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 #include "fluid_app/lattice/d3q19.hpp"
@@ -57,6 +58,10 @@ struct FlowSums {
   static constexpr double scale = 1073741824.0;  // 2^30 per lattice unit
 };
 
+// An integer of the width of T (the porous row's body slots, see KernelArgs::row_slot).
+template <class T>
+using SlotInt = std::conditional_t<sizeof(T) == 8, std::int64_t, std::int32_t>;
+
 template <class T>
 struct KernelArgs {
   T* f = nullptr;  // population planes: population i of cell c at f[i * stride + c]
@@ -80,22 +85,44 @@ struct KernelArgs {
   // Row scratch, 12 values per cell of the longest row (kPenaltyTerms planes of `row_len`).
   T* scratch = nullptr;
   int row_len = 0;
+  // The porous row's d, body index + 1 and node x coordinate (global, g + 1/2), per cell of
+  // the row, in the cell loop's own widths: with a float or int32 operand the vectorizer
+  // takes twice the cells per iteration, which spills registers and leaves long remainders.
+  T* row_d = nullptr;
+  SlotInt<T>* row_slot = nullptr;
+  T* row_x = nullptr;
 };
 
 namespace detail {
 
+// c_i . (x, y, z) over the non-zero components of c_i only: the same value as the three-term
+// sum with one to three fewer operations per population. A left-out term is a zero product,
+// and adding a zero changes a sum at most in the sign of a zero result, which the equilibrium
+// cannot see (it enters as 1 + 3 c.u and (c.u)^2). The compiler may not drop 0 * x itself
+// (it is -0 for negative x, NaN for infinite x). Starting from -0 keeps the first term exact.
+template <class T>
+[[gnu::always_inline]] inline T c_dot(int i, T x, T y, T z) {
+  using d3q19::c;
+  T s = T(-0.0);
+  if (c[i][0] != 0) s += T(c[i][0]) * x;
+  if (c[i][1] != 0) s += T(c[i][1]) * y;
+  if (c[i][2] != 0) s += T(c[i][2]) * z;
+  return s;
+}
+
+// Always inlined: the cell loop vectorizes only with the cell's body in it.
 template <class T, Forcing Mode, bool Sum>
-inline void collide_cell(const KernelArgs<T>& a, CellIndex cell, int x, int y, int z,
-                         const T (&f)[d3q19::Q], T (&out)[d3q19::Q], FlowSums& s,
-                         T (&ex)[kPenaltyTerms]) {
+[[gnu::always_inline]] inline void collide_cell(const KernelArgs<T>& a, int at, int y, int z,
+                                                const T (&f)[d3q19::Q], T (&out)[d3q19::Q],
+                                                FlowSums& s, T (&ex)[kPenaltyTerms]) {
   using namespace d3q19;
   T rho = 0, jx = 0, jy = 0, jz = 0;
 #pragma GCC unroll 19
   for (int i = 0; i < Q; ++i) {
     rho += f[i];
-    jx += T(c[i][0]) * f[i];
-    jy += T(c[i][1]) * f[i];
-    jz += T(c[i][2]) * f[i];
+    if (c[i][0] != 0) jx += T(c[i][0]) * f[i];  // zero terms left out, as in c_dot
+    if (c[i][1] != 0) jy += T(c[i][1]) * f[i];
+    if (c[i][2] != 0) jz += T(c[i][2]) * f[i];
   }
   const T inv_rho = T(1) / rho;
   const T vx = jx * inv_rho, vy = jy * inv_rho, vz = jz * inv_rho;
@@ -107,10 +134,10 @@ inline void collide_cell(const KernelArgs<T>& a, CellIndex cell, int x, int y, i
     uz += a.force[2] * inv_rho;
   }
   if constexpr (Mode == Forcing::porous || Mode == Forcing::porous_one_body) {
-    const T dd = T(a.d[cell]);
+    const T dd = a.row_d[at];
     T bt[9];
     if constexpr (Mode == Forcing::porous) {
-      const int id = a.body[cell] + 1;
+      const SlotInt<T> id = a.row_slot[at];
 #pragma GCC unroll 9
       for (int m = 0; m < 9; ++m) bt[m] = a.table[m][id];
     } else {
@@ -118,8 +145,7 @@ inline void collide_cell(const KernelArgs<T>& a, CellIndex cell, int x, int y, i
       for (int m = 0; m < 9; ++m) bt[m] = a.row_body[m];
     }
     // Node position in global lattice coordinates (node g at g + 1/2), minimum image.
-    T r[3] = {T(a.box.offset[0] + x - 1) + T(0.5) - bt[0],
-              T(a.box.offset[1] + y - 1) + T(0.5) - bt[1],
+    T r[3] = {a.row_x[at] - bt[0], T(a.box.offset[1] + y - 1) + T(0.5) - bt[1],
               T(a.box.offset[2] + z - 1) + T(0.5) - bt[2]};
     // Centres are wrapped into [0, L) on periodic axes (by the solver), so |r| < L and one
     // conditional shift gives the minimum image (selects vectorize, floor does not).
@@ -167,19 +193,40 @@ inline void collide_cell(const KernelArgs<T>& a, CellIndex cell, int x, int y, i
   if constexpr (Mode == Forcing::none) {
 #pragma GCC unroll 19
     for (int i = 0; i < Q; ++i) {
-      const T cv = T(c[i][0]) * vx + T(c[i][1]) * vy + T(c[i][2]) * vz;
+      const T cv = c_dot(i, vx, vy, vz);
       const T feq = T(w[i]) * rho * (T(1) + T(3) * cv + T(4.5) * cv * cv - vv);
       out[i] = feq + keep * (f[i] - feq);
     }
   } else {
-    const T uu = T(1.5) * (ux * ux + uy * uy + uz * uz);
-#pragma GCC unroll 19
-    for (int i = 0; i < Q; ++i) {
-      const T cv = T(c[i][0]) * vx + T(c[i][1]) * vy + T(c[i][2]) * vz;
-      const T cu = T(c[i][0]) * ux + T(c[i][1]) * uy + T(c[i][2]) * uz;
-      const T feq_v = T(w[i]) * rho * (T(1) + T(3) * cv + T(4.5) * cv * cv - vv);
-      const T feq_u = T(w[i]) * rho * (T(1) + T(3) * cu + T(4.5) * cu * cu - uu);
-      out[i] = feq_u + keep * (f[i] - feq_v);
+    // f*_i = f_i^eq(rho, u+) + keep (f_i - f_i^eq(rho, v)) (Eqs. (1), (2), (5) of
+    // docs/method.md) regrouped per cell, so that each population costs a few operations
+    // instead of two equilibria:
+    //   f*_i = keep f_i + w_i rho [A + 3 c_i.a + 9/2 c_i.M c_i],
+    //   a = u+ - keep v,   M = u+ u+^T - keep v v^T,   A = (1 - keep) - 3/2 (u+.u+ - keep v.v).
+    // c_i.M c_i is M_kk for an axis direction and M_kk + M_ll +- 2 M_kl for a diagonal one;
+    // i and its opposite share it and differ in the sign of c_i.a. Exact algebra, different
+    // round-off (docs/performance.md, "The porous kernel").
+    const T ax = ux - keep * vx, ay = uy - keep * vy, az = uz - keep * vz;
+    const T mxx = ux * ux - keep * (vx * vx), myy = uy * uy - keep * (vy * vy),
+            mzz = uz * uz - keep * (vz * vz);
+    const T mxy = ux * uy - keep * (vx * vy), mxz = ux * uz - keep * (vx * vz),
+            myz = uy * uz - keep * (vy * vz);
+    const T A = (T(1) - keep) - T(1.5) * (mxx + myy + mzz);
+    out[0] = T(w[0]) * rho * A + keep * f[0];
+#pragma GCC unroll 9
+    for (int i = 1; i <= 9; ++i) {
+      const T ca = c_dot(i, ax, ay, az);
+      T q = T(-0.0);  // c_i.M c_i
+      if (c[i][0] != 0) q += mxx;
+      if (c[i][1] != 0) q += myy;
+      if (c[i][2] != 0) q += mzz;
+      if (c[i][0] * c[i][1] != 0) q += T(2 * c[i][0] * c[i][1]) * mxy;
+      if (c[i][0] * c[i][2] != 0) q += T(2 * c[i][0] * c[i][2]) * mxz;
+      if (c[i][1] * c[i][2] != 0) q += T(2 * c[i][1] * c[i][2]) * myz;
+      const T b = A + T(4.5) * q;
+      const T wr = T(w[i]) * rho;
+      out[i] = wr * (b + T(3) * ca) + keep * f[i];
+      out[opposite(i)] = wr * (b - T(3) * ca) + keep * f[opposite(i)];
     }
   }
 }
@@ -218,7 +265,7 @@ inline void collide_row(const KernelArgs<T>& a, int x0, int len, int y, int z, F
     for (int i = 0; i < Q; ++i) fin[i] = src[i][k];
     FlowSums cs{};
     T ex[kPenaltyTerms];
-    collide_cell<T, Mode, Sum>(a, row + k, x0 + k, y, z, fin, fout, cs, ex);
+    collide_cell<T, Mode, Sum>(a, k, y, z, fin, fout, cs, ex);
     if constexpr (porous) {
 #pragma GCC unroll 12
       for (int m = 0; m < kPenaltyTerms; ++m) ex_row[m * ex_stride + k] = ex[m];
@@ -248,10 +295,23 @@ inline void collide_row(const KernelArgs<T>& a, int x0, int len, int y, int z, F
       acc[m] += sum;
     }
   } else if constexpr (Mode == Forcing::porous) {
-    for (int k = 0; k < len; ++k) {
-      if (a.d[row + k] >= 1.0f) continue;
-      double* acc = a.exchange + kPenaltyTerms * std::size_t(a.body[row + k] + 1);
-      for (int m = 0; m < kPenaltyTerms; ++m) acc[m] += double(ex_row[m * ex_stride + k]);
+    // Per run of one body's cells (fluid cells between them do not end it), its sums are
+    // held in registers: the same additions in the same order as adding cell by cell.
+    for (int k = 0; k < len;) {
+      if (a.d[row + k] >= 1.0f) {
+        ++k;
+        continue;
+      }
+      const std::int32_t b = a.body[row + k];
+      double* acc = a.exchange + kPenaltyTerms * std::size_t(b + 1);
+      double sum[kPenaltyTerms];
+      for (int m = 0; m < kPenaltyTerms; ++m) sum[m] = acc[m];
+      for (; k < len; ++k) {
+        if (a.d[row + k] >= 1.0f) continue;
+        if (a.body[row + k] != b) break;
+        for (int m = 0; m < kPenaltyTerms; ++m) sum[m] += double(ex_row[m * ex_stride + k]);
+      }
+      for (int m = 0; m < kPenaltyTerms; ++m) acc[m] = sum[m];
     }
   }
 }
@@ -259,12 +319,13 @@ inline void collide_row(const KernelArgs<T>& a, int x0, int len, int y, int z, F
 }  // namespace detail
 
 // Update the cells of `r` (local coordinates, interior only). `Odd` selects the AA step kind.
-// With the porous field, a row without any cell of d < 1 takes the fluid path: the plain
-// variant without a uniform force (what a fluid-only run does), else the uniform-force one.
-// For d = 1 the shift (1 - d)(u_p - v) adds exactly zero, so the result is the same, and the
-// cost of bodies grows with the rows they touch, not with the domain. (A closed-form
-// f^eq(u+) - f^eq(v) instead of the two equilibria, and splitting porous rows into runs,
-// were measured no faster: docs/performance.md, "Porous kernel".)
+// With the porous field, a row without any cell of d < 1 takes the uniform-force variant (with
+// a zero force if there is none): for d = 1 the shift (1 - d)(u_p - v) adds exactly zero and
+// both variants share the regrouped collision, so a fluid cell gets the same bits whichever
+// path its row takes (and so for any decomposition), and the cost of bodies grows with the
+// rows they touch, not with the domain. (The plain variant, which a run without bodies and
+// force takes, rounds differently; splitting porous rows into runs was measured no faster:
+// docs/performance.md, "The porous kernel".)
 template <class T, bool Odd, Forcing Mode, bool Sum>
 void collide_stream(const KernelArgs<T>& args, const CellRange& r, FlowSums& sums) {
   // A private copy: the population stores cannot alias it, so its pointers and constants
@@ -273,11 +334,16 @@ void collide_stream(const KernelArgs<T>& args, const CellRange& r, FlowSums& sum
   const int len = r.hi[0] - r.lo[0];
   FlowSums s{};
   std::vector<T> scratch;
-  const bool uniform_force = a.force[0] != 0 || a.force[1] != 0 || a.force[2] != 0;
+  std::vector<SlotInt<T>> slots;
   if constexpr (Mode == Forcing::porous) {
-    scratch.resize(std::size_t(kPenaltyTerms) * std::size_t(len));
+    scratch.resize(std::size_t(kPenaltyTerms + 2) * std::size_t(len));
+    slots.resize(std::size_t(len));
     a.scratch = scratch.data();
     a.row_len = len;
+    a.row_d = a.scratch + std::size_t(kPenaltyTerms) * std::size_t(len);
+    a.row_x = a.row_d + len;
+    a.row_slot = slots.data();
+    for (int k = 0; k < len; ++k) a.row_x[k] = T(a.box.offset[0] + r.lo[0] + k - 1) + T(0.5);
   }
   for (int z = r.lo[2]; z < r.hi[2]; ++z) {
     for (int y = r.lo[1]; y < r.hi[1]; ++y) {
@@ -287,11 +353,7 @@ void collide_stream(const KernelArgs<T>& args, const CellRange& r, FlowSums& sum
         int solid = 0;
         for (int k = 0; k < len; ++k) solid += d[k] < 1.0f ? 1 : 0;
         if (solid == 0) {
-          if (uniform_force) {
-            detail::collide_row<T, Odd, Forcing::uniform, Sum>(a, r.lo[0], len, y, z, s);
-          } else {
-            detail::collide_row<T, Odd, Forcing::none, Sum>(a, r.lo[0], len, y, z, s);
-          }
+          detail::collide_row<T, Odd, Forcing::uniform, Sum>(a, r.lo[0], len, y, z, s);
           continue;
         }
         const std::int32_t* body = a.body + row;
@@ -300,6 +362,8 @@ void collide_stream(const KernelArgs<T>& args, const CellRange& r, FlowSums& sum
           const bool p = d[k] < 1.0f;
           lo = p && body[k] < lo ? body[k] : lo;
           hi = p && body[k] > hi ? body[k] : hi;
+          a.row_d[k] = T(d[k]);
+          a.row_slot[k] = body[k] + 1;
         }
         if (lo == hi) {
           for (int m = 0; m < 9; ++m) a.row_body[m] = a.table[m][lo + 1];

@@ -60,6 +60,7 @@ HaloExchange<T>::HaloExchange(const Decomposition& dec, CellIndex stride)
                 if (in) l.inner.push_back(j * stride + b.index(x, y, z));
               }
         }
+        if (l.neighbour == rank_) continue;  // copied in place by finish(): no buffers
         l.send.resize(l.inner.size());
         l.recv.resize(l.ghost.size());
       }
