@@ -12,13 +12,15 @@ per-unit costs (tools/lbdem/scaling.py) and saves them with the measured memory 
 <out>/model.json; then checks the model against the 1- and 2-rank points it did not use
 (predicted against measured time per step). --fit-repeat K does the same on the fit scenes
 repeated K times along each axis (blocks of (58 K)^3 cells, the size a rank of the paper's
-systems holds) and saves <out>/model_rK.json, which --predict and --paper then use. --weak / --strong run the series (the study's cube
-scene, configs/bench/cubes64_c27.yaml: 64 cubes of a/dx = 9.7 at phi = 0.3 in 58^3 cells; weak:
-that cell repeated once per fluid rank; strong: the scene itself), each point with
-fluid.decomposition regular and balanced, and print the counters, the time per step and the
-load imbalance of both. --predict prints the model's time per step and memory per rank for
-the paper's three systems on 16 to 1024 cores. --paper runs a study system (its cube
-suspension at phi = 0.3, the packing given) for --steps steps here and prints the same.
+systems holds) and saves <out>/model_rK.json, which --predict and --paper then use;
+--calibrate RUN scales its fluid costs to a measured run of a paper system. --weak / --strong
+run the series (the study's cube scene, configs/bench/cubes64_c27.yaml: 64 cubes of a/dx = 9.7
+at phi = 0.3 in 58^3 cells; weak: that cell repeated once per fluid rank; strong: the scene
+itself), each point with fluid.decomposition regular and balanced, and print the counters, the
+time per step and the load imbalance of both. --predict prints the model's time per step and
+memory per rank for the paper's three systems on 16 to 1024 cores. --paper runs a study system
+(its cube suspension at phi = 0.3, the packing given) for --steps steps here and prints the
+same.
 Every figure comes from the run summaries (lbdem.rundir), none from log lines.
 """
 import argparse
