@@ -3,20 +3,24 @@
 cube scene, and the cost model of a coupled step (docs/scaling.md).
 
     /usr/bin/python3 tools/scaling.py [--build build] [--out runs/scaling] [--steps 40]
-        [--fit] [--weak 1 2 4 8] [--strong 1 2 4 8] [--dem-per-fluid 4] [--predict]
+        [--fit [--fit-repeat 3]] [--weak 1 2 4 8] [--strong 1 2 4 8] [--dem-per-fluid 4] [--predict]
         [--paper configs/study/paper_3150.yaml --packing FILE --ranks 2 1 --steps 300]
     /usr/bin/python3 tools/scaling.py --ci     # ctest: two tiny runs, the counters checked
 
 --fit runs the fit scenes on 1 fluid : 1 DEM rank (and one on 2 : 1 for the halo cost), fits the
 per-unit costs (tools/lbdem/scaling.py) and saves them with the measured memory per rank in
 <out>/model.json; then checks the model against the 1- and 2-rank points it did not use
-(predicted against measured time per step). --weak / --strong run the series (the study's cube
-scene, configs/bench/cubes64_c27.yaml: 64 cubes of a/dx = 9.7 at phi = 0.3 in 58^3 cells; weak:
-that cell repeated once per fluid rank; strong: the scene itself), each point with
-fluid.decomposition regular and balanced, and print the counters, the time per step and the
-load imbalance of both. --predict prints the model's time per step and memory per rank for
-the paper's three systems on 16 to 1024 cores. --paper runs a study system (its cube
-suspension at phi = 0.3, the packing given) for --steps steps here and prints the same.
+(predicted against measured time per step). --fit-repeat K does the same on the fit scenes
+repeated K times along each axis (blocks of (58 K)^3 cells, the size a rank of the paper's
+systems holds) and saves <out>/model_rK.json, which --predict and --paper then use;
+--calibrate RUN scales its fluid costs to a measured run of a paper system. --weak / --strong
+run the series (the study's cube scene, configs/bench/cubes64_c27.yaml: 64 cubes of a/dx = 9.7
+at phi = 0.3 in 58^3 cells; weak: that cell repeated once per fluid rank; strong: the scene
+itself), each point with fluid.decomposition regular and balanced, and print the counters, the
+time per step and the load imbalance of both. --predict prints the model's time per step and
+memory per rank for the paper's three systems on 16 to 1024 cores. --paper runs a study system
+(its cube suspension at phi = 0.3, the packing given) for --steps steps here and prints the
+same.
 Every figure comes from the run summaries (lbdem.rundir), none from log lines.
 """
 import argparse
@@ -192,41 +196,58 @@ def fit_row(args, name, p):
             "substeps": substeps_of(args, name)}
 
 
+def model_path(args):
+    """The model file of --fit-repeat K: model.json for the 58^3 blocks, model_rK.json else."""
+    k = args.fit_repeat
+    return os.path.join(args.out, "model.json" if k == 1 else f"model_r{k}.json")
+
+
 def fit(args):
-    base = with_steps(base_scene(), args.steps)
-    plan = [("fit_dense", base, 1), ("fit_dilute", thinned(base), 1),
-            ("fit_large", thinned(base, 1.6), 1), ("fit_small", thinned(base, 0.7), 1)]
+    # --fit-repeat K: every fit scene repeated K times along each axis, so that a rank holds a
+    # block of (58 K)^3 cells, as the paper's systems do (the per-cell costs grow once the
+    # populations leave the caches).
+    k = args.fit_repeat
+    tag = "" if k == 1 else f"_r{k}"
+
+    def big(s):
+        return repeated(s, (k, k, k))
+
+    small = with_steps(base_scene(), args.steps)
+    base = big(small)
+    plan = [("fit_dense", base, 1), ("fit_dilute", big(thinned(small)), 1),
+            ("fit_large", big(thinned(small, 1.6)), 1), ("fit_small", big(thinned(small, 0.7)), 1)]
+    plan = [(name + tag, scene, nf) for name, scene, nf in plan]
     rows, points = [], {}
     for name, scene, nf in plan:
         points[name] = launch(args, name, scene, nf, 1)
         rows.append(fit_row(args, name, points[name]))
-    points["fit_dilute_2"] = launch(args, "fit_dilute_2", thinned(base), 2, 1)
-    p2 = points["fit_dilute_2"]
+    p2 = points["fit_dilute_2" + tag] = launch(args, "fit_dilute_2" + tag, big(thinned(small)),
+                                              2, 1)
     model = scaling.fit_costs(rows, [(p2["fluid"],
                                       [r["busy_cpu_s_per_step"] for r in p2["fluid"]])])
     # The check: points the fit did not use, at 1 and 2 fluid ranks.
     checks = [("check_weak_1", base, 1), ("check_weak_2", repeated(base, (2, 1, 1)), 2),
               ("check_strong_2", base, 2)]
     for name, scene, nf in checks:
-        points[name] = launch(args, name, scene, nf, 1)
+        points[name + tag] = launch(args, name + tag, scene, nf, 1)
     mem_f = [(dict(r), r["max_rss_mib"] * 2**20) for p in points.values() for r in p["fluid"]]
     mem_d = [(dict(r), len_bodies(args, n), r["max_rss_mib"] * 2**20)
              for n, p in points.items() for r in p["dem"]]
     model.memory = scaling.fit_memory(mem_f, mem_d, GLOBAL_BODY_BYTES)
-    dense = points["fit_dense"]["fluid"][0]
+    dense = points["fit_dense" + tag]["fluid"][0]
     nb = len(base["bodies"])
     per_body = {"covered": dense["covered_cells"] / nb, "band": dense["band_cells"] / nb,
                 "interior": dense["body_interior_cells"] / nb}
-    dem0 = points["fit_dense"]["dem"][0]
+    dem0 = points["fit_dense" + tag]["dem"][0]
     ghost_reach = scaling.ghost_reach_from(dem0["atoms"], dem0["ghost_atoms"], cells_of(base))
     saved = {"costs": model.costs, "memory": model.memory, "per_body": per_body,
              "ghost_reach_cells": ghost_reach, "substeps": rows[0]["substeps"],
              "measured": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
-             "load_average": os.getloadavg()[0]}
-    with open(os.path.join(args.out, "model.json"), "w") as f:
+             "load_average": os.getloadavg()[0], "block_cells": math.prod(cells_of(base))}
+    with open(model_path(args), "w") as f:
         json.dump(saved, f, indent=1)
-    print("# per-unit costs fitted on 1 fluid : 1 DEM rank (halo: 2 : 1), load average "
-          f"{os.getloadavg()[0]:.1f}")
+    print(f"# per-unit costs fitted on 1 fluid : 1 DEM rank (halo: 2 : 1), blocks of "
+          f"{math.prod(cells_of(base))} cells, load average {os.getloadavg()[0]:.1f}")
     names = {"cell": "plain cell (lattice)", "covered": "covered cell, extra (lattice)",
              "exchange_step": "coupler exchange, fixed per step", "dem_step": "DEM, fixed per step",
              "porosity_cell": "covered cell (porosity + momentum exchange)",
@@ -263,12 +284,25 @@ def check_line(model, name, p, substeps):
 
 
 def load_model(args):
-    path = os.path.join(args.out, "model.json")
+    path = model_path(args)
     if not os.path.exists(path):
-        raise SystemExit(f"scaling: no model in {path}: run with --fit first")
+        raise SystemExit(f"scaling: no model in {path}: run with --fit (and the same "
+                         "--fit-repeat) first")
     with open(path) as f:
         saved = json.load(f)
     return scaling.Model(saved["costs"], saved["memory"]), saved
+
+
+def calibrated(args, model):
+    """The model with its fluid per-unit costs scaled to the busiest fluid rank's busy CPU time
+    measured in run `args.calibrate` (a folder under <out>; Model.calibrated)."""
+    r = Run(os.path.join(args.out, args.calibrate, "scene.yaml"), args.build)
+    p = point(r.summary("fluid"), r.summary("dem"), 0.0)
+    busy = max(x.get("busy_cpu_s_per_step", x["busy_s_per_step"]) for x in p["fluid"])
+    factor, model = model.calibrated(p["fluid"], busy)
+    print(f"# fluid per-unit costs scaled by {factor:.3f}, the busiest fluid rank's busy CPU "
+          f"time measured in {args.calibrate} over the model's")
+    return model
 
 
 # ---- series -----------------------------------------------------------------------------------
@@ -541,12 +575,19 @@ def main():
                     help="take a run whose folder holds the same scene and a finished run")
     ap.add_argument("--ci", action="store_true")
     ap.add_argument("--fit", action="store_true")
+    ap.add_argument("--fit-repeat", type=int, default=1, metavar="K",
+                    help="--fit on the fit scenes repeated K times along each axis (blocks of "
+                         "(58 K)^3 cells per rank), saved as model_rK.json; with --predict or "
+                         "--paper: use that model")
     ap.add_argument("--weak", type=int, nargs="*")
     ap.add_argument("--strong", type=int, nargs="*")
     ap.add_argument("--dem-per-fluid", type=int, default=4)
     ap.add_argument("--scene", default="cubes64_c27",
                     help="configs/bench scene of the strong series (bed64_c27: a settled bed)")
     ap.add_argument("--predict", action="store_true")
+    ap.add_argument("--calibrate", metavar="RUN",
+                    help="scale the fluid per-unit costs to the busy CPU time measured in RUN, a "
+                         "run folder under --out (e.g. paper_3150_2x1), for --paper and --predict")
     ap.add_argument("--paper", help="a study file (configs/study/paper_*.yaml) to run here")
     ap.add_argument("--packing", help="its phi = 0.4 packing (tools/make_packing.py)")
     ap.add_argument("--ranks", type=int, nargs=2, default=[2, 1], metavar=("FLUID", "DEM"))
@@ -563,8 +604,12 @@ def main():
         return
     model, saved = (fit(args), None) if args.fit else (None, None)
     if model is not None or args.predict or args.weak or args.strong or args.paper:
-        if os.path.exists(os.path.join(args.out, "model.json")):
+        if os.path.exists(model_path(args)):
             model, saved = load_model(args)
+    if args.calibrate:
+        if model is None:
+            model, saved = load_model(args)
+        model = calibrated(args, model)
     if args.weak:
         series(args, "weak", args.weak, model)
     if args.strong:

@@ -28,6 +28,7 @@ import math
 import numpy as np
 
 STATE_BYTES, LOAD_BYTES = 128, 72  # sizeof(BodyState), sizeof(BodyLoad)
+FLUID_COSTS = ("cell", "covered", "porosity_cell", "body", "halo_byte")  # of fluid_busy
 FLUID_TERMS = ("cells", "covered_cells", "band_cells", "body_interior_cells", "bodies_in_table",
                "halo_bytes_per_step")
 
@@ -177,6 +178,18 @@ class Model:
         f = max(self.fluid_busy(r) + self.exchange(r) for r in fluid_ranks)
         d = max(self.dem_busy(r, substeps) + self.exchange(r) for r in dem_ranks)
         return max(f, d), f, d
+
+    def calibrated(self, fluid_ranks, busy):
+        """(factor, model): the fluid per-unit costs scaled by one factor so that the busiest
+        of `fluid_ranks` (counter dicts of one measured run) costs `busy` seconds per step, the
+        exchange and DEM costs kept. Carries what the fit scenes do not show (randomly
+        oriented cubes, fluid ranks streaming their populations at once) from one measured
+        run of a large system to others."""
+        factor = busy / max(self.fluid_busy(r) for r in fluid_ranks)
+        costs = dict(self.costs)
+        for k in FLUID_COSTS:
+            costs[k] = costs.get(k, 0.0) * factor
+        return factor, Model(costs, self.memory)
 
     def fluid_memory(self, f):
         m = self.memory

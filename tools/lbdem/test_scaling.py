@@ -14,6 +14,22 @@ class Fit(unittest.TestCase):
         x = np.array([2e-8, 0.0, 5e-7])
         np.testing.assert_allclose(scaling.nnls(a, a @ x), x, atol=1e-15)
 
+    def test_calibration_scales_only_the_fluid_costs_to_the_measured_busy_time(self):
+        m = scaling.Model({"cell": 2e-8, "covered": 1e-7, "porosity_cell": 3e-7, "body": 2e-5,
+                           "halo_byte": 2e-9, "exchange_step": 1e-4, "coupler_byte": 1e-9,
+                           "dem_step": 5e-4, "atom_substep": 4e-8}, {"fluid_base": 1.0})
+        ranks = [{"cells": 4.8e6, "covered_cells": 1.7e6, "bodies_in_table": 1880,
+                  "halo_bytes_per_step": 3.6e6, "coupler_bytes_per_step": 3.8e5},
+                 {"cells": 4.8e6, "covered_cells": 1.6e6, "bodies_in_table": 1870,
+                  "halo_bytes_per_step": 3.6e6, "coupler_bytes_per_step": 3.7e5}]
+        factor, c = m.calibrated(ranks, 1.5 * m.fluid_busy(ranks[0]))
+        self.assertAlmostEqual(factor, 1.5)
+        self.assertAlmostEqual(max(c.fluid_busy(r) for r in ranks), 1.5 * m.fluid_busy(ranks[0]))
+        for k in ("exchange_step", "coupler_byte", "dem_step", "atom_substep"):
+            self.assertEqual(c.costs[k], m.costs[k])
+        self.assertEqual(c.memory, m.memory)
+        self.assertEqual(m.costs["cell"], 2e-8)  # the original is left as it was
+
     def test_nnls_never_returns_a_negative_cost(self):
         a = np.array([[1.0, 1.0], [1.0, 2.0], [1.0, 3.0]])
         b = np.array([3.0, 2.0, 1.0])  # unconstrained slope -1
