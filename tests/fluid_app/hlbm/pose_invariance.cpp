@@ -231,6 +231,18 @@ void check_case(const Case& c) {
     std::printf(" (reference %.4f, %+.2f %%, tolerance %.0f %%)", c.reference,
                 100 * (mean / c.reference - 1), 100 * c.tolerance);
   std::printf(", (max - min) / mean %.2f %% (bound 2 %%), %.1f s\n", 100 * spread, wall);
+  // The lines docs/validation-table.md is generated from (tools/validation_table.py).
+  const char* name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  std::printf(
+      "[validation] %s: spread over %zu poses error %.3e, tolerance %.1e (run time %.2f s, "
+      "1 rank)\n",
+      name, values.size(), spread, 0.02, wall);
+  if (c.reference > 0)
+    std::printf(
+        "[validation] %s: mean %s against the reference error %.3e, tolerance %.1e (run "
+        "time %.2f s, 1 rank)\n",
+        name, what, std::abs(mean / c.reference - 1), c.tolerance, wall);
+  std::fflush(stdout);
   EXPECT_LE(spread, 0.02);
   if (c.reference > 0) {
     EXPECT_LE(std::abs(mean / c.reference - 1), c.tolerance);
