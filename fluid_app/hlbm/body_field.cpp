@@ -198,12 +198,17 @@ void BodyField<T>::mark_interior(std::int32_t slot, std::uint32_t cell, float d,
   }
 }
 
-// Local coordinates per axis within the support radius of a body (plus one cell). Reads the
-// offsets tabulated for t (tabulate_offsets).
+// The support radius of a body in cells, plus one cell (far above the round-off of an offset).
+template <class T>
+double BodyField<T>::reach(const Tracked& t) const {
+  return shapes_[static_cast<std::size_t>(t.shape)].support_radius() / frame_.units.dx + 1.0;
+}
+
+// Local coordinates per axis within the reach of a body. Reads the offsets tabulated for t
+// (tabulate_offsets).
 template <class T>
 std::array<std::vector<int>, 3> BodyField<T>::support(const Tracked& t) const {
-  const double radius =
-      shapes_[static_cast<std::size_t>(t.shape)].support_radius() / frame_.units.dx + 1.0;
+  const double radius = reach(t);
   std::array<std::vector<int>, 3> lists;
   for (int a = 0; a < 3; ++a)
     for (int l = 0; l <= sub_.box.n[a] + 1; ++l)
@@ -337,19 +342,22 @@ void BodyField<T>::follow_band(std::int32_t slot, std::vector<BandCell>& band, U
     w.old[row * words + static_cast<std::size_t>(i) / 64] |= std::uint64_t{1} << (i % 64);
     mark(w.frontier, w.in_frontier, w.frontier_rows, static_cast<std::size_t>(i), row);
   }
-  // The outermost layer as whole rows: one bit per row for the x faces, every cell of the rows
-  // of a y or z face.
-  auto face_rows = [&](std::size_t row, std::size_t first_bit, bool whole) {
-    for (std::size_t k = 0; k < words; ++k) {
-      std::uint64_t bits = 0;
-      if (whole)
-        bits =
-            k + 1 < words || nx % 64 == 0 ? ~std::uint64_t{0} : (std::uint64_t{1} << (nx % 64)) - 1;
-      else if (k == first_bit / 64)
-        bits = std::uint64_t{1} << (first_bit % 64);
-      w.candidates[row * words + k] |= bits;
+  // The outermost layer, only its cells within the reach of the centre: beyond the support
+  // radius the porosity is 1 at this pose, and was at the last one (it moved by less than a
+  // cell), so no band piece and no interior can be there. Cells i_first .. i_last - 1 of a row.
+  const double reach = this->reach(t), reach2 = reach * reach;
+  auto face_cells = [&](std::size_t row, std::size_t i_first, std::size_t i_last) {
+    const double ry = rel_[1][static_cast<std::size_t>(w.l[1][row % ny])];
+    const double rz = rel_[2][static_cast<std::size_t>(w.l[2][row / ny])];
+    const double rest = reach2 - ry * ry - rz * rz;
+    bool any = false;
+    for (std::size_t i = i_first; i < i_last; ++i) {
+      const double rx = rel_[0][static_cast<std::size_t>(w.l[0][i])];
+      if (rx * rx > rest) continue;
+      w.candidates[row * words + i / 64] |= std::uint64_t{1} << (i % 64);
+      any = true;
     }
-    if (!w.in_candidates[row]) {
+    if (any && !w.in_candidates[row]) {
       w.in_candidates[row] = 1;
       w.candidate_rows.push_back(row);
     }
@@ -357,15 +365,15 @@ void BodyField<T>::follow_band(std::int32_t slot, std::vector<BandCell>& band, U
   for (int face : {0, box.n[0] + 1})
     if (const int wf = w.inv[0][static_cast<std::size_t>(face)]; wf >= 0)
       for (std::size_t row = 0; row < w.rows; ++row)
-        face_rows(row, static_cast<std::size_t>(wf), false);
+        face_cells(row, static_cast<std::size_t>(wf), static_cast<std::size_t>(wf) + 1);
   for (int face : {0, box.n[1] + 1})
     if (const int wf = w.inv[1][static_cast<std::size_t>(face)]; wf >= 0)
       for (std::size_t jz = 0; jz < nz; ++jz)
-        face_rows(static_cast<std::size_t>(wf) + ny * jz, 0, true);
+        face_cells(static_cast<std::size_t>(wf) + ny * jz, 0, nx);
   for (int face : {0, box.n[2] + 1})
     if (const int wf = w.inv[2][static_cast<std::size_t>(face)]; wf >= 0)
       for (std::size_t jy = 0; jy < ny; ++jy)
-        face_rows(jy + ny * static_cast<std::size_t>(wf), 0, true);
+        face_cells(jy + ny * static_cast<std::size_t>(wf), 0, nx);
 
   std::vector<std::uint64_t>& grown = w.grown;
   for (;;) {

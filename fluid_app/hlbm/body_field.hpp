@@ -156,6 +156,7 @@ class BodyField {
   void evaluate_queue(std::int32_t slot, UpdateStats& stats);
   void mark_interior(std::int32_t slot, std::uint32_t cell, float d, UpdateStats& stats);
   void open_window(const std::array<std::vector<int>, 3>& lists);
+  double reach(const Tracked& t) const;
   std::array<std::vector<int>, 3> support(const Tracked& t) const;
   void scan(std::int32_t slot, std::vector<BandCell>& band, UpdateStats& stats);
   void remove(std::int32_t slot, UpdateStats& stats);
