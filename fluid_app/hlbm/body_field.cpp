@@ -170,7 +170,13 @@ void BodyField<T>::evaluate_queue(std::int32_t slot, UpdateStats& stats) {
       batch_.mixed[k] = static_cast<std::uint32_t>(k);
     }
   }
-  for (std::size_t k = 0; k < n; ++k) mark_interior(slot, queue_.cell[k], batch_.d[k], stats);
+  // Most cells are neither interior now nor held as an interior before: one read decides.
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::uint32_t cell = queue_.cell[k];
+    const float d = batch_.d[k];
+    if (d != 0.0f && field_.d[cell] != 0.0f) continue;
+    mark_interior(slot, cell, d, stats);
+  }
 }
 
 // A cell whose interior owner changes is reset by combine(); the band cells (old and new) are
@@ -333,29 +339,60 @@ void BodyField<T>::follow_band(std::int32_t slot, std::vector<BandCell>& band, U
 
   // Seeds: the old band (inside the window: it moved by less than a cell) is the first
   // frontier; the box's outermost layer, where the support reaches it, is evaluated as is.
+  // The band is in cell order, so runs of it share a word: each word is written once.
+  std::size_t run_word = 0;
+  std::uint64_t run_bits = 0;
+  auto flush = [&]() {
+    if (!run_bits) return;
+    w.old[run_word] |= run_bits;
+    w.frontier[run_word] |= run_bits;
+    const std::size_t row = run_word / words;
+    if (!w.in_frontier[row]) {
+      w.in_frontier[row] = 1;
+      w.frontier_rows.push_back(row);
+    }
+  };
   for (const BandCell& b : t.band) {
     const int i = w.inv[0][b.l[0]], j = w.inv[1][b.l[1]], k = w.inv[2][b.l[2]];
     if (i < 0 || j < 0 || k < 0)
       throw std::logic_error("BodyField: a band cell of body " + std::to_string(t.id) +
                              " lies beyond its reach after an incremental move");
+    const auto x = static_cast<std::size_t>(i);
     const std::size_t row = static_cast<std::size_t>(j) + ny * static_cast<std::size_t>(k);
-    w.old[row * words + static_cast<std::size_t>(i) / 64] |= std::uint64_t{1} << (i % 64);
-    mark(w.frontier, w.in_frontier, w.frontier_rows, static_cast<std::size_t>(i), row);
+    const std::size_t word = row * words + x / 64;
+    if (word != run_word) {
+      flush();
+      run_word = word;
+      run_bits = 0;
+    }
+    run_bits |= std::uint64_t{1} << (x % 64);
   }
+  flush();
   // The outermost layer, only its cells within the reach of the centre: beyond the support
   // radius the porosity is 1 at this pose, and was at the last one (it moved by less than a
   // cell), so no band piece and no interior can be there. Cells i_first .. i_last - 1 of a row.
   const double reach = this->reach(t), reach2 = reach * reach;
-  auto face_cells = [&](std::size_t row, std::size_t i_first, std::size_t i_last) {
-    const double ry = rel_[1][static_cast<std::size_t>(w.l[1][row % ny])];
-    const double rz = rel_[2][static_cast<std::size_t>(w.l[2][row / ny])];
-    const double rest = reach2 - ry * ry - rz * rz;
-    bool any = false;
-    for (std::size_t i = i_first; i < i_last; ++i) {
-      const double rx = rel_[0][static_cast<std::size_t>(w.l[0][i])];
-      if (rx * rx > rest) continue;
-      w.candidates[row * words + i / 64] |= std::uint64_t{1} << (i % 64);
-      any = true;
+  // Squared offsets from the centre per window index (axis a: r2[a]).
+  for (int a = 0; a < 3; ++a) {
+    const std::vector<int>& l = w.l[static_cast<std::size_t>(a)];
+    std::vector<double>& r2 = w.r2[static_cast<std::size_t>(a)];
+    r2.resize(l.size());
+    for (std::size_t i = 0; i < l.size(); ++i) {
+      const double r = rel_[static_cast<std::size_t>(a)][static_cast<std::size_t>(l[i])];
+      r2[i] = r * r;
+    }
+  }
+  const std::vector<double>&rx2 = w.r2[0], &ry2 = w.r2[1], &rz2 = w.r2[2];
+  auto face_cells = [&](std::size_t jy, std::size_t jz, std::size_t i_first, std::size_t i_last) {
+    const double rest = reach2 - ry2[jy] - rz2[jz];
+    const std::size_t row = jy + ny * jz;
+    std::uint64_t any = 0;
+    for (std::size_t k = i_first / 64; 64 * k < i_last; ++k) {
+      std::uint64_t bits = 0;
+      for (std::size_t i = std::max(i_first, 64 * k); i < std::min(i_last, 64 * k + 64); ++i)
+        bits |= std::uint64_t{rx2[i] <= rest} << (i % 64);
+      w.candidates[row * words + k] |= bits;
+      any |= bits;
     }
     if (any && !w.in_candidates[row]) {
       w.in_candidates[row] = 1;
@@ -363,17 +400,18 @@ void BodyField<T>::follow_band(std::int32_t slot, std::vector<BandCell>& band, U
     }
   };
   for (int face : {0, box.n[0] + 1})
-    if (const int wf = w.inv[0][static_cast<std::size_t>(face)]; wf >= 0)
-      for (std::size_t row = 0; row < w.rows; ++row)
-        face_cells(row, static_cast<std::size_t>(wf), static_cast<std::size_t>(wf) + 1);
+    if (const int wf = w.inv[0][static_cast<std::size_t>(face)]; wf >= 0) {
+      const auto i = static_cast<std::size_t>(wf);
+      for (std::size_t jz = 0; jz < nz; ++jz)
+        for (std::size_t jy = 0; jy < ny; ++jy)
+          if (rx2[i] + ry2[jy] + rz2[jz] <= reach2) face_cells(jy, jz, i, i + 1);
+    }
   for (int face : {0, box.n[1] + 1})
     if (const int wf = w.inv[1][static_cast<std::size_t>(face)]; wf >= 0)
-      for (std::size_t jz = 0; jz < nz; ++jz)
-        face_cells(static_cast<std::size_t>(wf) + ny * jz, 0, nx);
+      for (std::size_t jz = 0; jz < nz; ++jz) face_cells(static_cast<std::size_t>(wf), jz, 0, nx);
   for (int face : {0, box.n[2] + 1})
     if (const int wf = w.inv[2][static_cast<std::size_t>(face)]; wf >= 0)
-      for (std::size_t jy = 0; jy < ny; ++jy)
-        face_cells(jy + ny * static_cast<std::size_t>(wf), 0, nx);
+      for (std::size_t jy = 0; jy < ny; ++jy) face_cells(jy, static_cast<std::size_t>(wf), 0, nx);
 
   std::vector<std::uint64_t>& grown = w.grown;
   for (;;) {

@@ -124,7 +124,8 @@ class BodyField {
     std::vector<std::uint8_t> in_frontier, in_candidates;  // per row: listed below
     std::vector<std::size_t> frontier_rows, candidate_rows;
     std::vector<std::uint64_t> grown, fresh;  // one row: dilated frontier, cells to evaluate
-    std::vector<float> d;  // porosity of the evaluated band cells, by window cell
+    std::vector<float> d;                   // porosity of the evaluated band cells, by window cell
+    std::array<std::vector<double>, 3> r2;  // squared offset from the centre per window index
   };
   std::vector<ReferencePorosity> shapes_;
   PorosityLookup lookup_ = PorosityLookup::trilinear;
