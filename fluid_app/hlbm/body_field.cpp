@@ -307,9 +307,9 @@ void BodyField<T>::open_window(const std::array<std::vector<int>, 3>& lists) {
 // every new band cell. With a move below kMaxIncrementalMove (a third of the ~1.5-cell band
 // width) every piece of the new band overlaps the old band, except pieces that enter the
 // stored box from outside: those contain a cell of the box's outermost layer, so when the
-// body's support crosses that layer its cells there are evaluated too. Interior cells (d = 0)
-// not reached keep their value: they cannot have left the interior without entering the new
-// band.
+// body's support crosses that layer its cells there within the body's reach are evaluated too.
+// Interior cells (d = 0) not reached keep their value: they cannot have left the interior without
+// entering the new band.
 //
 // The growth runs on bit rows of the body's window, a round at a time: a set of cells is
 // dilated by one cell (shifts along x, neighbouring rows in y and z, masked where the lists
