@@ -170,7 +170,13 @@ void BodyField<T>::evaluate_queue(std::int32_t slot, UpdateStats& stats) {
       batch_.mixed[k] = static_cast<std::uint32_t>(k);
     }
   }
-  for (std::size_t k = 0; k < n; ++k) mark_interior(slot, queue_.cell[k], batch_.d[k], stats);
+  // Most cells are neither interior now nor held as an interior before: one read decides.
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::uint32_t cell = queue_.cell[k];
+    const float d = batch_.d[k];
+    if (d != 0.0f && field_.d[cell] != 0.0f) continue;
+    mark_interior(slot, cell, d, stats);
+  }
 }
 
 // A cell whose interior owner changes is reset by combine(); the band cells (old and new) are
@@ -198,12 +204,17 @@ void BodyField<T>::mark_interior(std::int32_t slot, std::uint32_t cell, float d,
   }
 }
 
-// Local coordinates per axis within the support radius of a body (plus one cell). Reads the
-// offsets tabulated for t (tabulate_offsets).
+// The support radius of a body in cells, plus one cell (far above the round-off of an offset).
+template <class T>
+double BodyField<T>::reach(const Tracked& t) const {
+  return shapes_[static_cast<std::size_t>(t.shape)].support_radius() / frame_.units.dx + 1.0;
+}
+
+// Local coordinates per axis within the reach of a body. Reads the offsets tabulated for t
+// (tabulate_offsets).
 template <class T>
 std::array<std::vector<int>, 3> BodyField<T>::support(const Tracked& t) const {
-  const double radius =
-      shapes_[static_cast<std::size_t>(t.shape)].support_radius() / frame_.units.dx + 1.0;
+  const double radius = reach(t);
   std::array<std::vector<int>, 3> lists;
   for (int a = 0; a < 3; ++a)
     for (int l = 0; l <= sub_.box.n[a] + 1; ++l)
@@ -296,9 +307,9 @@ void BodyField<T>::open_window(const std::array<std::vector<int>, 3>& lists) {
 // every new band cell. With a move below kMaxIncrementalMove (a third of the ~1.5-cell band
 // width) every piece of the new band overlaps the old band, except pieces that enter the
 // stored box from outside: those contain a cell of the box's outermost layer, so when the
-// body's support crosses that layer its cells there are evaluated too. Interior cells (d = 0)
-// not reached keep their value: they cannot have left the interior without entering the new
-// band.
+// body's support crosses that layer its cells there within the body's reach are evaluated too.
+// Interior cells (d = 0) not reached keep their value: they cannot have left the interior without
+// entering the new band.
 //
 // The growth runs on bit rows of the body's window, a round at a time: a set of cells is
 // dilated by one cell (shifts along x, neighbouring rows in y and z, masked where the lists
@@ -328,44 +339,79 @@ void BodyField<T>::follow_band(std::int32_t slot, std::vector<BandCell>& band, U
 
   // Seeds: the old band (inside the window: it moved by less than a cell) is the first
   // frontier; the box's outermost layer, where the support reaches it, is evaluated as is.
+  // The band is in cell order, so runs of it share a word: each word is written once.
+  std::size_t run_word = 0;
+  std::uint64_t run_bits = 0;
+  auto flush = [&]() {
+    if (!run_bits) return;
+    w.old[run_word] |= run_bits;
+    w.frontier[run_word] |= run_bits;
+    const std::size_t row = run_word / words;
+    if (!w.in_frontier[row]) {
+      w.in_frontier[row] = 1;
+      w.frontier_rows.push_back(row);
+    }
+  };
   for (const BandCell& b : t.band) {
     const int i = w.inv[0][b.l[0]], j = w.inv[1][b.l[1]], k = w.inv[2][b.l[2]];
     if (i < 0 || j < 0 || k < 0)
       throw std::logic_error("BodyField: a band cell of body " + std::to_string(t.id) +
                              " lies beyond its reach after an incremental move");
+    const auto x = static_cast<std::size_t>(i);
     const std::size_t row = static_cast<std::size_t>(j) + ny * static_cast<std::size_t>(k);
-    w.old[row * words + static_cast<std::size_t>(i) / 64] |= std::uint64_t{1} << (i % 64);
-    mark(w.frontier, w.in_frontier, w.frontier_rows, static_cast<std::size_t>(i), row);
-  }
-  // The outermost layer as whole rows: one bit per row for the x faces, every cell of the rows
-  // of a y or z face.
-  auto face_rows = [&](std::size_t row, std::size_t first_bit, bool whole) {
-    for (std::size_t k = 0; k < words; ++k) {
-      std::uint64_t bits = 0;
-      if (whole)
-        bits =
-            k + 1 < words || nx % 64 == 0 ? ~std::uint64_t{0} : (std::uint64_t{1} << (nx % 64)) - 1;
-      else if (k == first_bit / 64)
-        bits = std::uint64_t{1} << (first_bit % 64);
-      w.candidates[row * words + k] |= bits;
+    const std::size_t word = row * words + x / 64;
+    if (word != run_word) {
+      flush();
+      run_word = word;
+      run_bits = 0;
     }
-    if (!w.in_candidates[row]) {
+    run_bits |= std::uint64_t{1} << (x % 64);
+  }
+  flush();
+  // The outermost layer, only its cells within the reach of the centre: beyond the support
+  // radius the porosity is 1 at this pose, and was at the last one (it moved by less than a
+  // cell), so no band piece and no interior can be there. Cells i_first .. i_last - 1 of a row.
+  const double reach = this->reach(t), reach2 = reach * reach;
+  // Squared offsets from the centre per window index (axis a: r2[a]).
+  for (int a = 0; a < 3; ++a) {
+    const std::vector<int>& l = w.l[static_cast<std::size_t>(a)];
+    std::vector<double>& r2 = w.r2[static_cast<std::size_t>(a)];
+    r2.resize(l.size());
+    for (std::size_t i = 0; i < l.size(); ++i) {
+      const double r = rel_[static_cast<std::size_t>(a)][static_cast<std::size_t>(l[i])];
+      r2[i] = r * r;
+    }
+  }
+  const std::vector<double>&rx2 = w.r2[0], &ry2 = w.r2[1], &rz2 = w.r2[2];
+  auto face_cells = [&](std::size_t jy, std::size_t jz, std::size_t i_first, std::size_t i_last) {
+    const double rest = reach2 - ry2[jy] - rz2[jz];
+    const std::size_t row = jy + ny * jz;
+    std::uint64_t any = 0;
+    for (std::size_t k = i_first / 64; 64 * k < i_last; ++k) {
+      std::uint64_t bits = 0;
+      for (std::size_t i = std::max(i_first, 64 * k); i < std::min(i_last, 64 * k + 64); ++i)
+        bits |= std::uint64_t{rx2[i] <= rest} << (i % 64);
+      w.candidates[row * words + k] |= bits;
+      any |= bits;
+    }
+    if (any && !w.in_candidates[row]) {
       w.in_candidates[row] = 1;
       w.candidate_rows.push_back(row);
     }
   };
   for (int face : {0, box.n[0] + 1})
-    if (const int wf = w.inv[0][static_cast<std::size_t>(face)]; wf >= 0)
-      for (std::size_t row = 0; row < w.rows; ++row)
-        face_rows(row, static_cast<std::size_t>(wf), false);
+    if (const int wf = w.inv[0][static_cast<std::size_t>(face)]; wf >= 0) {
+      const auto i = static_cast<std::size_t>(wf);
+      for (std::size_t jz = 0; jz < nz; ++jz)
+        for (std::size_t jy = 0; jy < ny; ++jy)
+          if (rx2[i] + ry2[jy] + rz2[jz] <= reach2) face_cells(jy, jz, i, i + 1);
+    }
   for (int face : {0, box.n[1] + 1})
     if (const int wf = w.inv[1][static_cast<std::size_t>(face)]; wf >= 0)
-      for (std::size_t jz = 0; jz < nz; ++jz)
-        face_rows(static_cast<std::size_t>(wf) + ny * jz, 0, true);
+      for (std::size_t jz = 0; jz < nz; ++jz) face_cells(static_cast<std::size_t>(wf), jz, 0, nx);
   for (int face : {0, box.n[2] + 1})
     if (const int wf = w.inv[2][static_cast<std::size_t>(face)]; wf >= 0)
-      for (std::size_t jy = 0; jy < ny; ++jy)
-        face_rows(jy + ny * static_cast<std::size_t>(wf), 0, true);
+      for (std::size_t jy = 0; jy < ny; ++jy) face_cells(jy, static_cast<std::size_t>(wf), 0, nx);
 
   std::vector<std::uint64_t>& grown = w.grown;
   for (;;) {

@@ -124,7 +124,8 @@ class BodyField {
     std::vector<std::uint8_t> in_frontier, in_candidates;  // per row: listed below
     std::vector<std::size_t> frontier_rows, candidate_rows;
     std::vector<std::uint64_t> grown, fresh;  // one row: dilated frontier, cells to evaluate
-    std::vector<float> d;  // porosity of the evaluated band cells, by window cell
+    std::vector<float> d;                   // porosity of the evaluated band cells, by window cell
+    std::array<std::vector<double>, 3> r2;  // squared offset from the centre per window index
   };
   std::vector<ReferencePorosity> shapes_;
   PorosityLookup lookup_ = PorosityLookup::trilinear;
@@ -156,6 +157,7 @@ class BodyField {
   void evaluate_queue(std::int32_t slot, UpdateStats& stats);
   void mark_interior(std::int32_t slot, std::uint32_t cell, float d, UpdateStats& stats);
   void open_window(const std::array<std::vector<int>, 3>& lists);
+  double reach(const Tracked& t) const;
   std::array<std::vector<int>, 3> support(const Tracked& t) const;
   void scan(std::int32_t slot, std::vector<BandCell>& band, UpdateStats& stats);
   void remove(std::int32_t slot, UpdateStats& stats);

@@ -59,35 +59,6 @@ ReferencePorosity::ReferencePorosity(const Voxels& voxels) : h_(voxels.h) {
         fluid_[static_cast<std::size_t>(fluid_origin_ + i + stride_[0] * j + stride_[1] * k)] =
             fluid[idx];
 
-  // Block classes: running minimum and maximum of the fluid fraction over 5 voxels along each
-  // axis in turn (outside the padded lattice: 1).
-  std::vector<float> lo = fluid, hi = fluid;
-  const std::array<std::size_t, 3> stride = {1, static_cast<std::size_t>(m_[0]),
-                                             static_cast<std::size_t>(m_[0]) * m_[1]};
-  for (int a = 0; a < 3; ++a) {
-    const std::vector<float> lo0 = lo, hi0 = hi;
-    idx = 0;
-    for (int k = 0; k < m_[2]; ++k)
-      for (int j = 0; j < m_[1]; ++j)
-        for (int i = 0; i < m_[0]; ++i, ++idx) {
-          const int l = a == 0 ? i : a == 1 ? j : k;
-          for (int s = -2; s <= 2; ++s) {
-            if (l + s < 0 || l + s >= m_[a]) {
-              hi[idx] = std::max(hi[idx], 1.0f);
-              continue;
-            }
-            const std::size_t o = static_cast<std::size_t>(
-                static_cast<std::ptrdiff_t>(idx) + s * static_cast<std::ptrdiff_t>(stride[a]));
-            lo[idx] = std::min(lo[idx], lo0[o]);
-            hi[idx] = std::max(hi[idx], hi0[o]);
-          }
-        }
-  }
-  // Three bytes more: the batched lookup reads four bytes at a voxel's class.
-  block_.assign(fluid.size() + 3, Block::fluid);
-  for (std::size_t v = 0; v < fluid.size(); ++v)
-    block_[v] = lo[v] == 1.0f ? Block::fluid : hi[v] == 0.0f ? Block::solid : Block::mixed;
-
   // 4^3 boxes: running minimum and maximum over voxels l .. l + 3 along each axis in turn, on
   // the lattice of box origins l = -2 .. m - 1 (voxels beyond the padded lattice: fluid).
   const std::array<int, 3> q = {m_[0] + 2, m_[1] + 2, m_[2] + 2};
@@ -132,7 +103,7 @@ ReferencePorosity::ReferencePorosity(const Voxels& voxels) : h_(voxels.h) {
             hi4[idx] = std::max(hi4[idx], h0[o]);
           }
   }
-  box4_.resize(boxes);
+  box4_.resize(boxes + 3);  // three bytes more: the batched lookup reads four at a box's byte
   for (std::size_t v = 0; v < boxes; ++v)
     box4_[v] = lo4[v] == 1.0f ? Block::fluid : hi4[v] == 0.0f ? Block::solid : Block::mixed;
 
@@ -150,7 +121,7 @@ ReferencePorosity::ReferencePorosity(const Voxels& voxels) : h_(voxels.h) {
 
 // Each point reads the voxel floor(p + o_i + kNearestHalf), the coordinate rounded as
 // (p + o_i) + kNearestHalf; the values are summed in stencil order. The node's nearest voxel lies
-// on the padded lattice (its block is mixed), so every point's voxel lies on fluid_, whose layers
+// on the padded lattice (its box is mixed), so every point's voxel lies on fluid_, whose layers
 // beyond the padded lattice are fluid like every point off it.
 float ReferencePorosity::read_points(double x, double y, double z,
                                      const NearestStencil& stencil) const {
@@ -166,18 +137,23 @@ float ReferencePorosity::read_points(double x, double y, double z,
   return fluid / 19.0f;  // as the averaged lattice: exactly 0 or 1 at the ends
 }
 
-// The block class of every node (four at a time where AVX2 is there, the same additions,
-// comparisons and truncations as block_at), then the 19 points of the mixed ones.
+// The class of the 4^3 box every node's points can reach (four nodes at a time where AVX2 is
+// there, the same additions, comparisons, floors and truncations as box_at), then the 19 points
+// of the mixed ones.
 void ReferencePorosity::nearest(NearestBatch& batch, const NearestStencil& stencil) const {
   const std::size_t n = batch.count;
   std::size_t count = 0, k = 0;
 #if defined(__AVX2__)
   const __m256d half = _mm256_set1_pd(kNearestHalf), zero = _mm256_setzero_pd();
+  const __m256d two = _mm256_set1_pd(2.0);
+  const __m256d ex = _mm256_set1_pd(stencil.extent[0]), ey = _mm256_set1_pd(stencil.extent[1]),
+                ez = _mm256_set1_pd(stencil.extent[2]);
   const __m256d mx = _mm256_set1_pd(m_[0]), my = _mm256_set1_pd(m_[1]), mz = _mm256_set1_pd(m_[2]);
-  const __m128i sy = _mm_set1_epi32(m_[0]), sz = _mm_set1_epi32(m_[0] * m_[1]);
+  const __m128i sy = _mm_set1_epi32(static_cast<int>(box4_stride_[0]));
+  const __m128i sz = _mm_set1_epi32(static_cast<int>(box4_stride_[1]));
   const __m128i byte = _mm_set1_epi32(0xff), fluid = _mm_set1_epi32(int(Block::fluid));
   const __m128i mixed = _mm_set1_epi32(int(Block::mixed)), lanes = _mm_setr_epi32(1, 2, 4, 8);
-  const auto* blocks = reinterpret_cast<const int*>(block_.data());
+  const auto* boxes = reinterpret_cast<const int*>(box4_.data());
   for (; k + 4 <= n; k += 4) {
     const __m256d x = _mm256_add_pd(_mm256_loadu_pd(&batch.x[k]), half);
     const __m256d y = _mm256_add_pd(_mm256_loadu_pd(&batch.y[k]), half);
@@ -187,15 +163,18 @@ void ReferencePorosity::nearest(NearestBatch& batch, const NearestStencil& stenc
             _mm256_and_pd(_mm256_cmp_pd(x, zero, _CMP_GE_OQ), _mm256_cmp_pd(x, mx, _CMP_LT_OQ)),
             _mm256_and_pd(_mm256_cmp_pd(y, zero, _CMP_GE_OQ), _mm256_cmp_pd(y, my, _CMP_LT_OQ))),
         _mm256_and_pd(_mm256_cmp_pd(z, zero, _CMP_GE_OQ), _mm256_cmp_pd(z, mz, _CMP_LT_OQ)));
-    const __m128i i = _mm256_cvttpd_epi32(_mm256_and_pd(x, on));
-    const __m128i j = _mm256_cvttpd_epi32(_mm256_and_pd(y, on));
-    const __m128i l = _mm256_cvttpd_epi32(_mm256_and_pd(z, on));
-    const __m128i voxel =
+    // Box origins floor(x - e) + 2 >= 0 on the padded lattice; lanes off it read box 0.
+    auto origin = [&](__m256d v, __m256d e) {
+      return _mm256_cvttpd_epi32(
+          _mm256_and_pd(_mm256_add_pd(_mm256_floor_pd(_mm256_sub_pd(v, e)), two), on));
+    };
+    const __m128i i = origin(x, ex), j = origin(y, ey), l = origin(z, ez);
+    const __m128i box =
         _mm_add_epi32(_mm_add_epi32(i, _mm_mullo_epi32(j, sy)), _mm_mullo_epi32(l, sz));
-    // Four bytes read at each voxel's byte (block_ is padded), the first kept; off the padded
+    // Four bytes read at each box's byte (box4_ is padded), the first kept; off the padded
     // lattice: fluid.
     const __m128i read = _mm_and_si128(
-        _mm_mask_i32gather_epi32(_mm_setzero_si128(), blocks, voxel, _mm_set1_epi32(-1), 1), byte);
+        _mm_mask_i32gather_epi32(_mm_setzero_si128(), boxes, box, _mm_set1_epi32(-1), 1), byte);
     const __m128i on_bits = _mm_set1_epi32(_mm256_movemask_pd(on));
     const __m128i inside = _mm_cmpeq_epi32(_mm_and_si128(on_bits, lanes), lanes);  // -1 or 0
     const __m128i cls = _mm_blendv_epi8(fluid, read, inside);
@@ -210,29 +189,13 @@ void ReferencePorosity::nearest(NearestBatch& batch, const NearestStencil& stenc
   }
 #endif
   for (; k < n; ++k) {
-    const Block b =
-        block_at(batch.x[k] + kNearestHalf, batch.y[k] + kNearestHalf, batch.z[k] + kNearestHalf);
+    const Block b = box_at(batch.x[k] + kNearestHalf, batch.y[k] + kNearestHalf,
+                           batch.z[k] + kNearestHalf, stencil);
     batch.d[k] = b == Block::fluid ? 1.0f : 0.0f;
     batch.mixed[count] = static_cast<std::uint32_t>(k);
     count += b == Block::mixed;
   }
-  // The mixed ones again with the 4^3 box their points can reach (a node's 5^3 block is mixed
-  // up to two voxels from a surface, its points reach less far on one side of each axis).
-  std::size_t still = 0;
-  for (std::size_t m = 0; m < count; ++m) {
-    const std::uint32_t node = batch.mixed[m];
-    const double x = batch.x[node] + kNearestHalf, y = batch.y[node] + kNearestHalf,
-                 z = batch.z[node] + kNearestHalf;
-    // x, y, z lie on the padded lattice (the block was mixed): the box origins are >= -2.
-    const auto i = static_cast<std::size_t>(std::floor(x - stencil.extent[0]) + 2);
-    const auto j = static_cast<std::size_t>(std::floor(y - stencil.extent[1]) + 2);
-    const auto l = static_cast<std::size_t>(std::floor(z - stencil.extent[2]) + 2);
-    const Block b = box4_[i + box4_stride_[0] * j + box4_stride_[1] * l];
-    batch.d[node] = b == Block::fluid ? 1.0f : 0.0f;
-    batch.mixed[still] = node;
-    still += b == Block::mixed;
-  }
-  batch.mixed_count = still;
+  batch.mixed_count = count;
   read_points(batch, stencil);
 }
 

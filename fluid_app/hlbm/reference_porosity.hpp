@@ -24,6 +24,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -64,7 +65,7 @@ struct NearestStencil {
 
 // Nodes for a batched lookup: `count` nodes with their reference-lattice coordinates, one array
 // per axis (the caller fills them), their porosity, and the `mixed_count` nodes whose porosity
-// may lie strictly between 0 and 1 (ReferencePorosity::nearest: those whose block is mixed), in
+// may lie strictly between 0 and 1 (ReferencePorosity::nearest: those whose 4^3 box is mixed), in
 // batch order. The arrays only grow, so that refilling a batch clears no memory.
 struct NearestBatch {
   std::size_t count = 0, mixed_count = 0;
@@ -96,7 +97,7 @@ class ReferencePorosity {
   // (R^T c_i). Exactly 0 or 1 when all 19 agree.
   double nearest(const Eigen::Vector3d& ref, const NearestStencil& stencil) const;
   // The same for every node of a batch (sets batch.d), bit for bit what the single-node lookup
-  // gives: the nodes whose block is mixed read their points several nodes at a time.
+  // gives: the nodes whose 4^3 box is mixed read their points several nodes at a time.
   void nearest(NearestBatch& batch, const NearestStencil& stencil) const;
 
   // Reference-lattice coordinates of a shape-frame point p (m): ref = p / h + shift().
@@ -110,7 +111,7 @@ class ReferencePorosity {
 
  private:
   static constexpr int kPad = 2;  // one layer for the 19-point stencil, one for trilinear
-  // Whether the voxels within Chebyshev distance 2 of a voxel are all fluid, all solid, or mixed.
+  // Whether a box of voxels is all fluid, all solid, or mixed.
   enum class Block : std::uint8_t { mixed, fluid, solid };
   double h_ = 0;
   Eigen::Vector3d shift_ = Eigen::Vector3d::Zero();
@@ -124,9 +125,6 @@ class ReferencePorosity {
   std::vector<float> fluid_;
   std::ptrdiff_t fluid_origin_ = 0;
   std::array<std::ptrdiff_t, 2> stride_{0, 0};
-  // Per voxel: are the voxels within Chebyshev distance 2 (outside the lattice: fluid) all
-  // fluid or all solid? Every stencil point of a node lies within 2 of the node's nearest voxel.
-  std::vector<Block> block_;
   // Per voxel l (-2 <= l_a < m_a, stored at l + 2): the class of the 4^3 voxels l .. l + 3 (beyond
   // the padded lattice: fluid). A node at x = ref + kNearestHalf reads, per axis, voxels between
   // floor(x - e) and floor(x + e) (e: the stencil's extent), at most 4 of them since 2 e < 3.
@@ -135,16 +133,18 @@ class ReferencePorosity {
   double support_radius_ = 0;
   double surface_radius_ = 0;
 
-  // Block class of the nearest voxel of a point (reference coordinates, kNearestHalf added);
-  // a point off the padded lattice is fluid.
-  Block block_at(double x, double y, double z) const {
+  // Class of the 4^3 box a node's points can reach, the node at x, y, z (reference coordinates,
+  // kNearestHalf added); a node off the padded lattice is fluid (its points reach at most its
+  // two fluid layers).
+  Block box_at(double x, double y, double z, const NearestStencil& stencil) const {
     if (!(x >= 0 && y >= 0 && z >= 0 && x < m_[0] && y < m_[1] && z < m_[2])) return Block::fluid;
-    const std::size_t sy = static_cast<std::size_t>(m_[0]);
-    const std::size_t sz = sy * static_cast<std::size_t>(m_[1]);
-    return block_[static_cast<std::size_t>(x) + sy * static_cast<std::size_t>(y) +
-                  sz * static_cast<std::size_t>(z)];
+    // On the padded lattice the box origins are >= -2.
+    const auto i = static_cast<std::size_t>(std::floor(x - stencil.extent[0]) + 2);
+    const auto j = static_cast<std::size_t>(std::floor(y - stencil.extent[1]) + 2);
+    const auto l = static_cast<std::size_t>(std::floor(z - stencil.extent[2]) + 2);
+    return box4_[i + box4_stride_[0] * j + box4_stride_[1] * l];
   }
-  // The nearest lookup's 19 loads for a node of a mixed block, out of line so that the
+  // The nearest lookup's 19 loads for a node of a mixed box, out of line so that the
   // shortcut inlines into the update loops.
   float read_points(double x, double y, double z, const NearestStencil& stencil) const;
   // The same for the nodes batch.mixed of a batch, several at a time where AVX2 is there.
@@ -183,14 +183,12 @@ inline double ReferencePorosity::at(const Eigen::Vector3d& ref) const {
   return detail::lerp(detail::lerp(c00, c10, ty), detail::lerp(c01, c11, ty), tz);
 }
 
-// The stencil offsets have components |o_a| <= |c_i| = sqrt(2) < 2 voxels, so each point's
-// nearest voxel lies within Chebyshev distance 2 of the node's own nearest voxel: where that
-// block is uniform the 19 points all read the same value and the sum below is exactly 0 or 19.
-// Cells beyond the band (most of the update's candidates) cost one load instead of 19; the
-// result is the 19-point sum's bit for bit.
+// A node's 19 points read voxels within its 4^3 box (box4_): where that box is uniform they all
+// read the same value and the sum below is exactly 0 or 19. Cells beyond the band (most of the
+// update's candidates) cost one load instead of 19; the result is the 19-point sum's bit for bit.
 inline double ReferencePorosity::nearest(const Eigen::Vector3d& ref,
                                          const NearestStencil& stencil) const {
-  switch (block_at(ref.x() + kNearestHalf, ref.y() + kNearestHalf, ref.z() + kNearestHalf)) {
+  switch (box_at(ref.x() + kNearestHalf, ref.y() + kNearestHalf, ref.z() + kNearestHalf, stencil)) {
     case Block::fluid:
       return 1.0;
     case Block::solid:
