@@ -67,6 +67,21 @@ class Fit(unittest.TestCase):
             self.assertAlmostEqual(fitted.costs[k] / v, 1.0, places=6, msg=k)
 
 
+    def test_porosity_costs_come_from_the_rotated_runs(self):
+        runs = []
+        for covered, bodies, per_cell, turned in ((64000, 64, 5e-8, False), (8000, 8, 5e-8, False),
+                                                  (8500, 8, 9e-8, True), (16000, 8, 9e-8, True),
+                                                  (3000, 8, 9e-8, True)):
+            f = {"cells": 195112, "porous_row_cells": 40000, "covered_cells": covered,
+                 "bodies_in_table": bodies, "coupler_bytes_per_step": 200.0 * bodies}
+            runs.append({"f": f, "d": {"atoms": 27, "ghost_atoms": 0}, "substeps": 4,
+                         "lattice": 0.004, "porosity": per_cell * covered + 1e-5 * bodies,
+                         "exchange": 1e-4, "dem": 1e-4, "rotated": turned})
+        fitted = scaling.fit_costs(runs)
+        self.assertAlmostEqual(fitted.costs["porosity_cell"] / 9e-8, 1.0, places=6)
+        self.assertAlmostEqual(fitted.costs["body"] / 1e-5, 1.0, places=6)
+
+
 class Halo(unittest.TestCase):
     def test_one_rank_on_a_periodic_box_sends_nothing(self):
         self.assertEqual(scaling.halo_values((29, 29, 29), (1, 1, 1)), (0, 0))
