@@ -529,6 +529,11 @@ def paper_run(args, model):
     print_counters(name + ":", r)
     if model:
         check_line(model, name, r, sub)
+        f0 = r["fluid"][0]
+        print(f"  fluid rank 0, CPU ms per step measured / model: lattice "
+              f"{1e3 * r['lattice_cpu']:.1f} / {1e3 * model.lattice(f0):.1f} (without the halo), "
+              f"porosity + momentum exchange {1e3 * r['porosity_cpu']:.1f} / "
+              f"{1e3 * model.porosity(f0):.1f}")
         for side, rows in (("fluid", r["fluid"]), ("DEM", r["dem"])):
             pred = [model.fluid_memory(x) if side == "fluid" else model.dem_memory(x, n)
                     for x in rows]

@@ -182,14 +182,21 @@ class Model:
         self.costs = dict(costs or {})
         self.memory = dict(memory or {})
 
-    def fluid_busy(self, f):
+    def lattice(self, f):
+        """The lattice part of a fluid rank's busy time, without the halo."""
         c = self.costs
         # A model fitted before the porous-row counter has no c_row (and needs no counter).
         rows = c["porous_row"] * f["porous_row_cells"] if "porous_row" in c else 0.0
-        return (c["cell"] * f["cells"] + rows
-                + (c["covered"] + c["porosity_cell"]) * f["covered_cells"]
-                + c["body"] * f["bodies_in_table"] + c.get("halo_byte", 0.0)
-                * f["halo_bytes_per_step"])
+        return c["cell"] * f["cells"] + rows + c["covered"] * f["covered_cells"]
+
+    def porosity(self, f):
+        """The porosity + momentum exchange part of a fluid rank's busy time."""
+        c = self.costs
+        return c["porosity_cell"] * f["covered_cells"] + c["body"] * f["bodies_in_table"]
+
+    def fluid_busy(self, f):
+        return (self.lattice(f) + self.porosity(f)
+                + self.costs.get("halo_byte", 0.0) * f["halo_bytes_per_step"])
 
     def exchange(self, side):
         return self.costs["exchange_step"] + self.costs["coupler_byte"] * side[
