@@ -3,7 +3,8 @@
 cube scene, and the cost model of a coupled step (docs/scaling.md).
 
     /usr/bin/python3 tools/scaling.py [--build build] [--out runs/scaling] [--steps 40]
-        [--fit [--fit-repeat 3]] [--weak 1 2 4 8] [--strong 1 2 4 8] [--dem-per-fluid 4] [--predict]
+        [--fit [--fit-repeat 3] [--fit-runs 3]] [--weak 1 2 4 8] [--strong 1 2 4 8]
+        [--dem-per-fluid 4] [--predict]
         [--paper configs/study/paper_3150.yaml --packing FILE --ranks 2 1 --steps 300]
     /usr/bin/python3 tools/scaling.py --ci     # ctest: two tiny runs, the counters checked
 
@@ -12,7 +13,8 @@ per-unit costs (tools/lbdem/scaling.py) and saves them with the measured memory 
 <out>/model.json; then checks the model against the 1- and 2-rank points it did not use
 (predicted against measured time per step). --fit-repeat K does the same on the fit scenes
 repeated K times along each axis (blocks of (58 K)^3 cells, the size a rank of the paper's
-systems holds) and saves <out>/model_rK.json, which --predict and --paper then use;
+systems holds) and saves <out>/model_rK.json, which --predict and --paper then use; --fit-runs
+K runs each fit and check scene K times and keeps the least disturbed run (shared cores);
 --calibrate RUN scales its fluid costs to a measured run of a paper system. --weak / --strong
 run the series (the study's cube scene, configs/bench/cubes64_c27.yaml: 64 cubes of a/dx = 9.7
 at phi = 0.3 in 58^3 cells; weak: that cell repeated once per fluid rank; strong: the scene
@@ -100,6 +102,18 @@ def thinned(s, scale=1.0):
     return s
 
 
+def rotated(s, seed=7):
+    """The scene's bodies turned to random orientations (uniform quaternions, fixed seed): the
+    same covered cells per body as aligned ones, on many more lattice rows."""
+    import numpy as np
+    s = copy.deepcopy(s)
+    rng = np.random.default_rng(seed)
+    for b in s["bodies"]:
+        q = rng.normal(size=4)
+        b["orientation"] = [float(x) for x in q / np.linalg.norm(q)]
+    return s
+
+
 def launch(args, name, scene, fluid, dem, nice=0):
     folder = os.path.join(args.out, name)
     os.makedirs(folder, exist_ok=True)
@@ -168,8 +182,9 @@ def substeps_of(args, name):
 
 
 # ---- counters table ---------------------------------------------------------------------------
-FLUID_COLS = ("busy_cpu_s_per_step", "coupler_cpu_s_per_step", "cells", "covered_cells",
-              "band_cells", "body_interior_cells", "bodies_in_table", "bodies_touching",
+FLUID_COLS = ("busy_cpu_s_per_step", "coupler_cpu_s_per_step", "cells", "porous_row_cells",
+              "covered_cells", "band_cells", "body_interior_cells", "bodies_in_table",
+              "bodies_touching",
               "halo_bytes_per_step", "halo_messages_per_step", "coupler_bytes_per_step",
               "coupler_messages_per_step", "max_rss_mib")
 DEM_COLS = ("busy_cpu_s_per_step", "coupler_cpu_s_per_step", "bodies_owned", "atoms",
@@ -214,22 +229,28 @@ def fit(args):
 
     small = with_steps(base_scene(), args.steps)
     base = big(small)
+    # The aligned cubes touch few lattice rows per covered cell, the rotated ones many; the
+    # porosity part of a rotated cube costs more per covered cell (1.4-1.7 x; its band update
+    # evaluates only 14 % more cells), and the suspensions the model predicts are
+    # randomly oriented: the porosity costs come from the rotated scenes (8 bodies 29 cells
+    # apart: at 1.3 x the edge two facing corners and their bands stay 4 cells apart).
     plan = [("fit_dense", base, 1), ("fit_dilute", big(thinned(small)), 1),
-            ("fit_large", big(thinned(small, 1.6)), 1), ("fit_small", big(thinned(small, 0.7)), 1)]
+            ("fit_large", big(thinned(small, 1.6)), 1), ("fit_small", big(thinned(small, 0.7)), 1),
+            ("fit_rotated", big(rotated(thinned(small))), 1),
+            ("fit_rotated_large", big(rotated(thinned(small, 1.3))), 1),
+            ("fit_rotated_small", big(rotated(thinned(small, 0.7))), 1)]
     plan = [(name + tag, scene, nf) for name, scene, nf in plan]
-    rows, points = [], {}
-    for name, scene, nf in plan:
-        points[name] = launch(args, name, scene, nf, 1)
-        rows.append(fit_row(args, name, points[name]))
-    p2 = points["fit_dilute_2" + tag] = launch(args, "fit_dilute_2" + tag, big(thinned(small)),
-                                              2, 1)
+    plan.append(("fit_dilute_2" + tag, big(thinned(small)), 2))
+    points = best_of(args, plan)
+    rows = [dict(fit_row(args, name, points[name]), rotated="rotated" in name)
+            for name, _, nf in plan if nf == 1]
+    p2 = points["fit_dilute_2" + tag]
     model = scaling.fit_costs(rows, [(p2["fluid"],
                                       [r["busy_cpu_s_per_step"] for r in p2["fluid"]])])
     # The check: points the fit did not use, at 1 and 2 fluid ranks.
     checks = [("check_weak_1", base, 1), ("check_weak_2", repeated(base, (2, 1, 1)), 2),
               ("check_strong_2", base, 2)]
-    for name, scene, nf in checks:
-        points[name + tag] = launch(args, name + tag, scene, nf, 1)
+    points.update(best_of(args, [(name + tag, scene, nf) for name, scene, nf in checks]))
     mem_f = [(dict(r), r["max_rss_mib"] * 2**20) for p in points.values() for r in p["fluid"]]
     mem_d = [(dict(r), len_bodies(args, n), r["max_rss_mib"] * 2**20)
              for n, p in points.items() for r in p["dem"]]
@@ -248,7 +269,8 @@ def fit(args):
         json.dump(saved, f, indent=1)
     print(f"# per-unit costs fitted on 1 fluid : 1 DEM rank (halo: 2 : 1), blocks of "
           f"{math.prod(cells_of(base))} cells, load average {os.getloadavg()[0]:.1f}")
-    names = {"cell": "plain cell (lattice)", "covered": "covered cell, extra (lattice)",
+    names = {"cell": "plain cell (lattice)", "porous_row": "cell of a porous row, extra (lattice)",
+             "covered": "covered cell, extra (lattice)",
              "exchange_step": "coupler exchange, fixed per step", "dem_step": "DEM, fixed per step",
              "porosity_cell": "covered cell (porosity + momentum exchange)",
              "body": "body in a rank's table (porosity + momentum exchange)",
@@ -267,6 +289,24 @@ def fit(args):
     for name, p in points.items():
         check_line(model, name, p, substeps_of(args, name))
     return model
+
+
+def best_of(args, plan):
+    """{name: point} of the runs (name, scene, fluid ranks; one DEM rank), each run
+    --fit-runs times, interleaved (repetition k in folder name.k), keeping the repetition with
+    the least busy CPU time of the busiest fluid rank: on shared cores the one least slowed by
+    other processes' use of the caches and the memory bus."""
+    best = {}
+    for k in range(args.fit_runs):
+        for name, scene, nf in plan:
+            p = launch(args, name if k == 0 else f"{name}.{k + 1}", scene, nf, 1)
+            if name not in best or busy_cpu(p) < busy_cpu(best[name]):
+                best[name] = p
+    return best
+
+
+def busy_cpu(p):
+    return max(r.get("busy_cpu_s_per_step", r["busy_s_per_step"]) for r in p["fluid"])
 
 
 def len_bodies(args, name):
@@ -489,6 +529,11 @@ def paper_run(args, model):
     print_counters(name + ":", r)
     if model:
         check_line(model, name, r, sub)
+        f0 = r["fluid"][0]
+        print(f"  fluid rank 0, CPU ms per step measured / model: lattice "
+              f"{1e3 * r['lattice_cpu']:.1f} / {1e3 * model.lattice(f0):.1f} (without the halo), "
+              f"porosity + momentum exchange {1e3 * r['porosity_cpu']:.1f} / "
+              f"{1e3 * model.porosity(f0):.1f}")
         for side, rows in (("fluid", r["fluid"]), ("DEM", r["dem"])):
             pred = [model.fluid_memory(x) if side == "fluid" else model.dem_memory(x, n)
                     for x in rows]
@@ -530,6 +575,11 @@ def ci(args):
                f"{name}: per-rank cells sum to the lattice, {math.prod(n)}")
         expect(all(r["covered_cells"] == r["band_cells"] + r["body_interior_cells"] for r in fl),
                f"{name}: covered = band + body interior on every rank")
+        expect(all(r["covered_cells"] <= r["porous_row_cells"] <= r["cells"] for r in fl),
+               f"{name}: covered <= cells of porous rows <= cells on every rank")
+        if dims is None:
+            expect(fl[0]["porous_row_cells"] % n[0] == 0,
+                   f"{name}: one rank's porous rows are whole rows of {n[0]} cells")
         expect(all(0 < r["bodies_touching"] <= r["bodies_in_table"] for r in fl),
                f"{name}: 0 < bodies touching <= bodies in the table")
         expect(sum(r["bodies_owned"] for r in dm) == len(s["bodies"]),
@@ -579,6 +629,9 @@ def main():
                     help="--fit on the fit scenes repeated K times along each axis (blocks of "
                          "(58 K)^3 cells per rank), saved as model_rK.json; with --predict or "
                          "--paper: use that model")
+    ap.add_argument("--fit-runs", type=int, default=1, metavar="K",
+                    help="--fit: run each fit and check scene K times, interleaved, and keep the "
+                         "run with the least busy CPU time (shared cores)")
     ap.add_argument("--weak", type=int, nargs="*")
     ap.add_argument("--strong", type=int, nargs="*")
     ap.add_argument("--dem-per-fluid", type=int, default=4)

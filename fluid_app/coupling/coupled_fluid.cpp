@@ -90,8 +90,10 @@ void restore_covered(hlbm::PenaltyLoads<T>& loads, const hlbm::BodyField<T>& bod
 
 // This rank's work at the end of the run: its cells, those a body covers (d < 1), split into
 // the band (0 < d < 1) and the bodies' interiors (d = 0), where the porous kernel and the load
-// sums run; the bodies in its table and those that cover at least one of its cells; what its
-// halo exchange sent per lattice step (the tables of tools/scaling.py's cost model).
+// sums run; the cells of the rows the kernel runs on a porous path (every row with a covered
+// cell, FluidSolver::porous_row_cells); the bodies in its table and those that cover at least
+// one of its cells; what its halo exchange sent per lattice step (the tables of
+// tools/scaling.py's cost model).
 template <class T>
 void count_work(CouplingSession& session, const FluidSolver<T>& solver,
                 double covered_cell_weight) {
@@ -119,6 +121,7 @@ void count_work(CouplingSession& session, const FluidSolver<T>& solver,
   session.count("covered_cells", covered);
   session.count("band_cells", covered - interior);
   session.count("body_interior_cells", interior);
+  session.count("porous_row_cells", solver.porous_row_cells());
   session.count("bodies_in_table", double(field.bodies.size()));
   session.count("bodies_touching", touched);
   session.count("weighted_work",

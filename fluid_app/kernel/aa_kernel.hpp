@@ -318,6 +318,15 @@ inline void collide_row(const KernelArgs<T>& a, int x0, int len, int y, int z, F
 
 }  // namespace detail
 
+// Whether a row of `len` cells of the porous field takes a porous path in collide_stream: one
+// of its cells covered (d < 1). The per-rank counter of the cost model (porous_row_cells) asks
+// the same question, so that it counts the rows the kernel runs.
+inline bool porous_row(const float* d, int len) {
+  int solid = 0;
+  for (int k = 0; k < len; ++k) solid += d[k] < 1.0f ? 1 : 0;
+  return solid != 0;
+}
+
 // Update the cells of `r` (local coordinates, interior only). `Odd` selects the AA step kind.
 // With the porous field, a row without any cell of d < 1 takes the uniform-force variant (with
 // a zero force if there is none): for d = 1 the shift (1 - d)(u_p - v) adds exactly zero and
@@ -350,9 +359,7 @@ void collide_stream(const KernelArgs<T>& args, const CellRange& r, FlowSums& sum
       if constexpr (Mode == Forcing::porous) {
         const CellIndex row = a.box.index(r.lo[0], y, z);
         const float* d = a.d + row;
-        int solid = 0;
-        for (int k = 0; k < len; ++k) solid += d[k] < 1.0f ? 1 : 0;
-        if (solid == 0) {
+        if (!porous_row(d, len)) {
           detail::collide_row<T, Odd, Forcing::uniform, Sum>(a, r.lo[0], len, y, z, s);
           continue;
         }

@@ -187,6 +187,22 @@ class FluidSolverImpl {
     if (sum) reduce_flow(sums);
   }
 
+  // Cells of the rows of the shell and the core that the kernel runs on a porous path now.
+  double porous_row_cells() const {
+    if (!porous_field.active) return 0;
+    double cells = 0;
+    auto count = [&](const CellRange& r) {
+      if (r.empty()) return;
+      const int len = r.hi[0] - r.lo[0];
+      for (int z = r.lo[2]; z < r.hi[2]; ++z)
+        for (int y = r.lo[1]; y < r.hi[1]; ++y)
+          if (porous_row(porous_field.d.data() + box.index(r.lo[0], y, z), len)) cells += len;
+    };
+    for (const CellRange& r : shell) count(r);
+    count(core);
+    return cells;
+  }
+
   // The kernel's flat sums (entry 0: body -1) as one PenaltyExchange per body.
   void store_exchange() {
     auto& out = porous_field.exchange;
@@ -434,6 +450,11 @@ PorousField<T>& FluidSolver<T>::porous() {
 template <class T>
 const PorousField<T>& FluidSolver<T>::porous() const {
   return impl_->porous_field;
+}
+
+template <class T>
+double FluidSolver<T>::porous_row_cells() const {
+  return impl_->porous_row_cells();
 }
 
 template class FluidSolver<double>;

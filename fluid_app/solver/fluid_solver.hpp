@@ -112,6 +112,10 @@ class FluidSolver {
   // The porosity field (allocated on first call: d = 1, body = -1, inactive).
   PorousField<T>& porous();
   const PorousField<T>& porous() const;
+  // Cells of the rows (along x, as the kernel splits this rank's block: the inner cells and the
+  // shell around them) that take a porous path with the porous field as it is now: rows with a
+  // covered cell (porous_row, fluid_app/kernel/aa_kernel.hpp). 0 while the field is inactive.
+  double porous_row_cells() const;
 
   // Bytes the kernel moves per cell update: 2 * 19 * sizeof(T) (+ 8 with the porous field).
   static constexpr int bytes_per_cell_update(bool porous) {
