@@ -10,7 +10,7 @@ namespace {
 
 constexpr std::chrono::microseconds kSpin{200};
 constexpr std::chrono::microseconds kFirstSleep{50};
-constexpr std::chrono::microseconds kLongestSleep{2000};
+constexpr std::chrono::microseconds kLongestSleep{500};
 
 // Test without sleeping for kSpin, then test, sleep, test again with a growing sleep; stops
 // early at `deadline`. The spin serves the waits that end within microseconds (the rounds of a

@@ -4,8 +4,9 @@
 // Open MPI's blocking calls (MPI_Wait, MPI_Barrier, ...) busy-poll: a fluid rank waiting for
 // the DEM would spin at 100 % on the very core the DEM rank computes on when both share a
 // node. `backoff` instead tests the request without sleeping for 200 us (a message already on
-// its way costs no sleep), then sleeps between tests, starting at 50 us and doubling up to 2 ms,
-// so an idle side costs a few percent of a core and a message is noticed at most ~2 ms late.
+// its way costs no sleep), then sleeps between tests, starting at 50 us and doubling up to
+// 0.5 ms, so an idle side costs about 2 % of a core and a message is noticed at most ~0.5 ms
+// late (docs/performance.md, "Waiting").
 // `blocking` is the plain MPI_Wait, kept for comparison (tools/coupler_idle_bench measures both).
 #include <mpi.h>
 
