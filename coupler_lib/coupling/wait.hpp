@@ -6,7 +6,7 @@
 // node. `backoff` instead tests the request without sleeping for 200 us (a message already on
 // its way costs no sleep), then sleeps between tests, starting at 50 us and doubling up to
 // 0.5 ms, so an idle side costs about 2 % of a core and a message is noticed at most ~0.5 ms
-// late (docs/performance.md, "Waiting").
+// late (docs/performance.md, "Waiting without burning a core").
 // `blocking` is the plain MPI_Wait, kept for comparison (tools/coupler_idle_bench measures both).
 #include <mpi.h>
 
