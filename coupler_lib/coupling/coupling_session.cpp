@@ -185,8 +185,15 @@ int CouplingSession::finish(const CouplingTimes& coupler) {
   } else if (lead) {
     log->info("coupled {} run finished after {} steps", side_label(side_), step_);
   }
-  if (lead && step_ > first_) log->info("{}", step_split(coupler));
-  report_work(coupler);
+  const CouplingTimes steps = since(coupler, before_steps_);
+  if (lead && step_ > first_) {
+    log->info(
+        "coupler before the first step: {:.3f} s, of which {:.3f} s waiting for {} (its "
+        "set-up; not in the time per step)",
+        before_steps_.total_s, before_steps_.idle_s, peer);
+    log->info("{}", step_split(steps));
+  }
+  report_work(steps);
   return end_ == SessionEnd::unstable ? kExitUnstable : 0;
 }
 
@@ -243,6 +250,7 @@ void CouplingSession::report_work(const CouplingTimes& coupler) {
   s.exit_status = end_ == SessionEnd::unstable ? kExitUnstable : 0;
   s.last_checkpoint = remembered_checkpoint();
   s.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+  s.before_steps_s = before_steps_.total_s;
   for (const Part& p : parts_) {
     s.per_step_s.emplace_back(p.name, p.seconds / n);
     s.per_step_cpu_s.emplace_back(p.name, p.cpu_seconds / n);

@@ -124,6 +124,11 @@ class CouplingSession {
   int agreed_flags() const { return agreed_; }  // the flags of the agreement that ended the run
   const std::string& last_checkpoint() const { return checkpoint_; }
 
+  // Marks the start of the steps: what the coupler did so far (the first exchange, which
+  // waits for the other program's set-up) is reported as the wait before the first step and
+  // left out of the time per step. Call it right before the step loop.
+  void steps_begin(const CouplingTimes& coupler_so_far) { before_steps_ = coupler_so_far; }
+
   // "time per coupled step (<side> rank 0): <part> <s> s (<note>), ..., exchange <s> s, idle
   // (waiting for <peer>) <s> s", per step run in this process (tools/coupled_bench.py reads it).
   std::string step_split(const CouplingTimes& coupler) const;
@@ -133,7 +138,8 @@ class CouplingSession {
   // the coupler's exchange and idle time, and the per-rank work: every counter and the max RSS
   // as min / mean / max over the ranks, and the load imbalance (max / mean of the busy time,
   // the timed parts, per step). It writes the run summary (run_summary.hpp) next to the body
-  // trace. Returns the exit status: 0, or kExitUnstable.
+  // trace. `coupler`: the coupler's times of the whole run (steps_begin's part is taken off).
+  // Returns the exit status: 0, or kExitUnstable.
   int finish(const CouplingTimes& coupler);
 
  private:
@@ -160,6 +166,7 @@ class CouplingSession {
   std::vector<Counter> counters_;
   std::vector<std::string> outputs_;
   std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
+  CouplingTimes before_steps_;  // the coupler's times up to the first step (steps_begin)
   struct Part {
     std::string name, note;
     double seconds = 0;

@@ -30,6 +30,18 @@ struct CouplingTimes {
   double exchange_s() const { return total_s - idle_s; }  // routing, packing, transfer, checks
 };
 
+// What happened between two readings of the same coupler's times (`later` minus `earlier`).
+inline CouplingTimes since(const CouplingTimes& later, const CouplingTimes& earlier) {
+  CouplingTimes d;
+  d.calls = later.calls - earlier.calls;
+  d.total_s = later.total_s - earlier.total_s;
+  d.idle_s = later.idle_s - earlier.idle_s;
+  d.cpu_s = later.cpu_s - earlier.cpu_s;
+  d.bytes = later.bytes - earlier.bytes;
+  d.messages = later.messages - earlier.messages;
+  return d;
+}
+
 // Adds one exchange's buckets (one per rank of the other program) to the traffic.
 template <class Packet>
 void count_traffic(CouplingTimes& t, const std::vector<std::vector<Packet>>& buckets) {

@@ -1,8 +1,26 @@
 #include "coupler_lib/coupling/exchange.hpp"
 
 #include <chrono>
+#include <exception>
 
 namespace lbdem {
+
+namespace {
+
+// Tags on the intercommunicator (the hello of world.cpp uses another one).
+constexpr int kCountTag = 4720;
+constexpr int kPacketTag = 4721;
+
+// Completes every request, adding the seconds to `wait.waited_s`.
+void wait_all(std::vector<MPI_Request>& requests, const ExchangeWait& wait) {
+  const auto t0 = std::chrono::steady_clock::now();
+  for (MPI_Request& r : requests) wait_request(r, wait.mode, wait.between_tests);
+  requests.clear();
+  if (wait.waited_s)
+    *wait.waited_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
 
 int remote_size(MPI_Comm inter) {
   int n = 0;
@@ -10,39 +28,66 @@ int remote_size(MPI_Comm inter) {
   return n;
 }
 
-std::vector<std::byte> exchange_bytes(MPI_Comm inter, const std::vector<std::byte>& send,
-                                      const std::vector<int>& send_counts,
-                                      std::vector<int>& recv_counts, const ExchangeWait& wait) {
-  const int n = remote_size(inter);
-  if (static_cast<int>(send_counts.size()) != n)
-    throw std::invalid_argument("exchange: " + std::to_string(send_counts.size()) +
-                                " send buckets for " + std::to_string(n) + " remote ranks");
-  recv_counts.assign(static_cast<size_t>(n), 0);
-  MPI_Request req;
-  const auto t0 = std::chrono::steady_clock::now();
-  MPI_Ialltoall(send_counts.data(), 1, MPI_INT, recv_counts.data(), 1, MPI_INT, inter, &req);
-  wait_request(req, wait.mode, wait.between_tests);
-  if (wait.waited_s)
-    *wait.waited_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-
-  std::vector<int> sdispl(static_cast<size_t>(n)), rdispl(static_cast<size_t>(n));
-  long long s = 0, r = 0;
-  for (size_t i = 0; i < static_cast<size_t>(n); ++i) {
-    sdispl[i] = static_cast<int>(s);
-    rdispl[i] = static_cast<int>(r);
-    s += send_counts[i];
-    r += recv_counts[i];
+PacketSender::~PacketSender() {
+  if (std::uncaught_exceptions() > 0) {
+    // The run is failing and both programs are stopping: what a receiver would still read
+    // no longer matters, and waiting could hang on a program that is gone.
+    for (MPI_Request& r : sent_) MPI_Request_free(&r);
+    return;
   }
-  if (s > INT32_MAX || r > INT32_MAX)
-    throw std::length_error("exchange: more than 2 GiB of packets in one step");
-  std::vector<std::byte> recv(static_cast<size_t>(r));
-  // Never hand MPI a null buffer pointer, even for zero counts.
-  std::byte dummy{};
-  const void* sbuf = send.empty() ? static_cast<const void*>(&dummy) : send.data();
-  void* rbuf = recv.empty() ? static_cast<void*>(&dummy) : recv.data();
-  MPI_Ialltoallv(sbuf, send_counts.data(), sdispl.data(), MPI_BYTE, rbuf, recv_counts.data(),
-                 rdispl.data(), MPI_BYTE, inter, &req);
-  wait_request(req, wait.mode, wait.between_tests);
+  for (MPI_Request& r : sent_) wait_request(r, WaitMode::backoff);
+}
+
+void PacketSender::complete(const ExchangeWait& wait) {
+  wait_all(sent_, wait);
+}
+
+void PacketSender::send_bytes(std::vector<std::byte> flat, std::vector<int> counts,
+                              const ExchangeWait& wait) {
+  const int n = remote_size(inter_);
+  if (static_cast<int>(counts.size()) != n)
+    throw std::invalid_argument("transfer: " + std::to_string(counts.size()) +
+                                " send buckets for " + std::to_string(n) + " remote ranks");
+  complete(wait);
+  counts_ = std::move(counts);
+  data_ = std::move(flat);
+  size_t at = 0;
+  for (int i = 0; i < n; ++i) {
+    const int count = counts_[static_cast<size_t>(i)];
+    sent_.emplace_back();
+    MPI_Isend(&counts_[static_cast<size_t>(i)], 1, MPI_INT, i, kCountTag, inter_, &sent_.back());
+    if (count > 0) {
+      sent_.emplace_back();
+      MPI_Isend(data_.data() + at, count, MPI_BYTE, i, kPacketTag, inter_, &sent_.back());
+    }
+    at += static_cast<size_t>(count);
+  }
+}
+
+std::vector<std::byte> receive_bytes(MPI_Comm inter, std::vector<int>& counts,
+                                     const ExchangeWait& wait) {
+  const int n = remote_size(inter);
+  counts.assign(static_cast<size_t>(n), 0);
+  std::vector<MPI_Request> requests(static_cast<size_t>(n));
+  for (int i = 0; i < n; ++i)
+    MPI_Irecv(&counts[static_cast<size_t>(i)], 1, MPI_INT, i, kCountTag, inter,
+              &requests[static_cast<size_t>(i)]);
+  wait_all(requests, wait);
+  long long total = 0;
+  for (int c : counts) total += c;
+  if (total > INT32_MAX)
+    throw std::length_error("transfer: more than 2 GiB of packets in one step");
+  std::vector<std::byte> recv(static_cast<size_t>(total));
+  size_t at = 0;
+  for (int i = 0; i < n; ++i) {
+    const int count = counts[static_cast<size_t>(i)];
+    if (count > 0) {
+      requests.emplace_back();
+      MPI_Irecv(recv.data() + at, count, MPI_BYTE, i, kPacketTag, inter, &requests.back());
+    }
+    at += static_cast<size_t>(count);
+  }
+  wait_all(requests, wait);
   return recv;
 }
 

@@ -1,27 +1,40 @@
 #include "coupler_lib/coupling/live_transport.hpp"
 
+#include <type_traits>
+#include <utility>
+
 #include "coupler_lib/coupling/exchange.hpp"
 
 namespace lbdem {
 
 namespace {
 
-// One exchange whose waits for the other program run under the world's stall watch.
-template <class T>
-std::vector<std::vector<T>> watched(const World& world, WaitMode mode, double& waited,
-                                    std::int64_t step, const std::vector<std::vector<T>>& send) {
+// The wait of one transfer, run under the world's stall watch: the check between two tests
+// also notices the other program leaving early.
+ExchangeWait watched_wait(const World& world, WaitMode mode, double& waited) {
+  StallWatch& stall = world.stall();
+  return ExchangeWait(
+      mode,
+      [&world, &stall] {
+        world.check_peer();
+        stall.check();
+      },
+      &waited);
+}
+
+// Runs one transfer (`f`, given its wait) as step `step` of the stall watch.
+template <class F>
+auto watched(const World& world, WaitMode mode, double& waited, std::int64_t step, F&& f) {
   StallWatch& stall = world.stall();
   stall.begin(step);
-  auto received = exchange(world.inter(), send,
-                           ExchangeWait(
-                               mode,
-                               [&world, &stall] {
-                                 world.check_peer();
-                                 stall.check();
-                               },
-                               &waited));
-  stall.end();
-  return received;
+  if constexpr (std::is_void_v<decltype(f(std::declval<const ExchangeWait&>()))>) {
+    f(watched_wait(world, mode, waited));
+    stall.end();
+  } else {
+    auto received = f(watched_wait(world, mode, waited));
+    stall.end();
+    return received;
+  }
 }
 
 }  // namespace
@@ -31,7 +44,8 @@ LiveFluidTransport::LiveFluidTransport(const World& world)
       inter_(world.inter()),
       rank_(world.rank()),
       dem_ranks_(world.peer().size),
-      wait_(world.wait()) {}
+      wait_(world.wait()),
+      loads_(inter_) {}
 
 void LiveFluidTransport::announce(const FluidLayout& layout) {
   // Fluid rank 0 broadcasts to every DEM rank (intercommunicator broadcast: the sending
@@ -47,17 +61,23 @@ void LiveFluidTransport::announce(const FluidLayout& layout) {
 }
 
 std::vector<std::vector<BodyState>> LiveFluidTransport::receive_states(std::int64_t step) {
-  return watched(*world_, wait_, waited_, step,
-                 std::vector<std::vector<BodyState>>(static_cast<size_t>(dem_ranks_)));
+  return watched(*world_, wait_, waited_, step, [this](const ExchangeWait& wait) {
+    return receive_packets<BodyState>(inter_, wait);
+  });
 }
 
 void LiveFluidTransport::send_loads(std::int64_t step,
                                     const std::vector<std::vector<BodyLoad>>& per_dem_rank) {
-  watched(*world_, wait_, waited_, step, per_dem_rank);
+  watched(*world_, wait_, waited_, step,
+          [&](const ExchangeWait& wait) { loads_.send(per_dem_rank, wait); });
 }
 
 LiveDemTransport::LiveDemTransport(const World& world)
-    : world_(&world), inter_(world.inter()), fluid_ranks_(world.peer().size), wait_(world.wait()) {}
+    : world_(&world),
+      inter_(world.inter()),
+      fluid_ranks_(world.peer().size),
+      wait_(world.wait()),
+      states_(inter_) {}
 
 FluidLayout LiveDemTransport::receive_layout() {
   unsigned long long n = 0;
@@ -72,12 +92,14 @@ FluidLayout LiveDemTransport::receive_layout() {
 
 void LiveDemTransport::send_states(std::int64_t step, std::span<const BodyState>,
                                    const std::vector<std::vector<BodyState>>& per_fluid_rank) {
-  watched(*world_, wait_, waited_, step, per_fluid_rank);
+  watched(*world_, wait_, waited_, step,
+          [&](const ExchangeWait& wait) { states_.send(per_fluid_rank, wait); });
 }
 
 std::vector<std::vector<BodyLoad>> LiveDemTransport::receive_loads(std::int64_t step) {
-  return watched(*world_, wait_, waited_, step,
-                 std::vector<std::vector<BodyLoad>>(static_cast<size_t>(fluid_ranks_)));
+  return watched(*world_, wait_, waited_, step, [this](const ExchangeWait& wait) {
+    return receive_packets<BodyLoad>(inter_, wait);
+  });
 }
 
 }  // namespace lbdem

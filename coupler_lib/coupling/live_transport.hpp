@@ -1,7 +1,8 @@
 #pragma once
 // The live transport: packets go to the other program over the intercommunicator
-// (exchange.hpp), waiting with the world's wait mode and watching for the other program
-// leaving early (World::check_peer) or going silent (World::stall).
+// (exchange.hpp: one-way transfers, sends completed in the background), waiting with the world's
+// wait mode and watching for the other program leaving early (World::check_peer) or going silent
+// (World::stall).
 #include "coupler_lib/coupling/exchange.hpp"
 #include "coupler_lib/coupling/transport.hpp"
 #include "coupler_lib/coupling/world.hpp"
@@ -25,6 +26,7 @@ class LiveFluidTransport : public FluidTransport {
   int rank_;
   int dem_ranks_;
   WaitMode wait_;
+  PacketSender loads_;
 };
 
 class LiveDemTransport : public DemTransport {
@@ -43,6 +45,7 @@ class LiveDemTransport : public DemTransport {
   MPI_Comm inter_;
   int fluid_ranks_;
   WaitMode wait_;
+  PacketSender states_;
 };
 
 }  // namespace lbdem

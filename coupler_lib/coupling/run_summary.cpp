@@ -67,6 +67,7 @@ std::string run_summary_json(const RunSummary& s) {
   o << "  \"exit_status\": " << s.exit_status << ",\n";
   o << "  \"last_checkpoint\": " << json_string(s.last_checkpoint) << ",\n";
   o << "  \"wall_s\": " << json_number(s.wall_s) << ",\n";
+  o << "  \"before_steps_s\": " << json_number(s.before_steps_s) << ",\n";
   o << "  \"per_step_s\": {";
   for (std::size_t i = 0; i < s.per_step_s.size(); ++i)
     o << (i ? ", " : "") << json_string(s.per_step_s[i].first) << ": "

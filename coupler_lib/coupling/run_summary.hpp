@@ -8,7 +8,8 @@
 //
 // It holds the scene (file, fingerprint), the program and version, the rank counts of both
 // programs, the steps run (first, last, of the schedule), how the run ended and its exit
-// status, the last checkpoint, the wall time and the time per step split into parts (wall and
+// status, the last checkpoint, the wall time, the coupler's time before the first step (the
+// other program's set-up) and the time per step split into parts (wall and
 // CPU seconds of the timed parts), and per
 // rank every work counter with its min / mean / max and the load imbalance (max / mean of the
 // busy time per step). Keys are documented in docs/user-guide.md ("Run summary").
@@ -43,6 +44,7 @@ struct RunSummary {
   int fluid_ranks = 0, dem_ranks = 0, exit_status = 0;
   std::int64_t first_step = 0, last_step = 0, schedule_steps = 0;
   double dt = 0, wall_s = 0;
+  double before_steps_s = 0;  // in the coupler before the first step (the peer's set-up)
   std::vector<std::pair<std::string, double>> per_step_s;      // part -> seconds per step (rank 0)
   std::vector<std::pair<std::string, double>> per_step_cpu_s;  // its CPU seconds (rank 0)
   RankTable ranks;

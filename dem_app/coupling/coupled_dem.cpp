@@ -135,6 +135,7 @@ int run_coupled_dem(AppContext& ctx) {
                          trace ? trace->flushed_bytes() : -1, ctx.side_comm);
   });
   coupler->send_states(session.step(), owned);
+  session.steps_begin(coupler->times());
   const BodyWatchLimits limits = body_watch_limits(scene);
   std::string trouble;  // the bodies' diagnosis, once found (the first finding stays)
   while (session.ongoing()) {

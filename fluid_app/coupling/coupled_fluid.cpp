@@ -324,6 +324,7 @@ int run_typed(AppContext& ctx) {
                            covered, lengths, work);
   });
 
+  session.steps_begin(coupler->times());
   while (session.ongoing()) {
     const std::int64_t step = session.next_step();
     session.timed("lattice", [&] { run.step(); });

@@ -113,6 +113,32 @@ TEST_F(Alone, WritesTheRunSummaryWithCountersAndTheSplit) {
     EXPECT_NE(json.find(want), std::string::npos) << want << "\n" << json;
 }
 
+TEST_F(Alone, TheWaitBeforeTheFirstStepIsNotPartOfTheSplit) {
+  CouplingSession session(side, scene, schedule, nullptr);
+  CouplingTimes start;  // the first exchange: 4 s waiting for the other program's set-up
+  start.calls = 1;
+  start.total_s = 4.5;
+  start.idle_s = 4.0;
+  start.bytes = 1000;
+  start.messages = 1;
+  session.steps_begin(start);
+  while (session.ongoing()) session.advance(0);
+  CouplingTimes coupler = start;  // then 6 steps: 0.75 s in the coupler, 0.375 s of it waiting
+  coupler.calls += 12;
+  coupler.total_s += 0.75;
+  coupler.idle_s += 0.375;
+  coupler.bytes += 600;
+  coupler.messages += 12;
+  EXPECT_EQ(session.finish(coupler), 0);
+  std::ifstream in(run_summary_path(scene, "fluid"));
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string json = text.str();
+  for (const char* want : {"\"before_steps_s\": 4.5", "\"exchange\": 0.0625", "\"idle\": 0.0625",
+                           "\"coupler_bytes_per_step\": {\"values\": [100]"})
+    EXPECT_NE(json.find(want), std::string::npos) << want << "\n" << json;
+}
+
 TEST(RunSummary, MaxOverMeanIsTheLoadImbalance) {
   EXPECT_DOUBLE_EQ(max_over_mean({1.0, 1.0, 2.0, 0.0}), 2.0);
   EXPECT_DOUBLE_EQ(max_over_mean({}), 1.0);
