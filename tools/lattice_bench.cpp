@@ -20,12 +20,14 @@
 // sums themselves. Two builds agree bit for bit iff the hashes agree.
 #include <mpi.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <ctime>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -58,6 +60,53 @@ std::uint64_t fnv(std::uint64_t h, const void* p, std::size_t n) {
 struct Timing {
   double cpu = 0, wall = 0;
 };
+
+// Cells per 512-bit vector in double: the porous kernel's cell loop takes this many per
+// iteration (docs/performance.md, "The porous kernel").
+constexpr int kVectorCells = 8;
+
+// How the porous rows are made: rows with a covered cell (d < 1), those whose covered cells
+// all belong to one body (the kernel broadcasts that body's parameters on them), and, on the
+// porous rows, the vectors of the cell loop (kVectorCells cells from the row's start) that hold
+// several bodies' covered cells or none.
+struct RowComposition {
+  std::size_t rows = 0, porous_rows = 0, one_body_rows = 0, covered_cells = 0;
+  std::size_t vectors = 0, mixed_vectors = 0, fluid_vectors = 0;
+};
+
+RowComposition row_composition(const LocalBox& box, const PorousField<double>& field) {
+  RowComposition c;
+  const auto bodies_in = [&](int x0, int x1, int y, int z, std::int32_t& lo, std::int32_t& hi) {
+    lo = std::numeric_limits<std::int32_t>::max();
+    hi = -2;
+    std::size_t n = 0;
+    for (int x = x0; x < x1; ++x) {
+      const CellIndex i = box.index(x, y, z);
+      if (field.d[i] >= 1.0f) continue;
+      ++n;
+      lo = std::min(lo, field.body[i]);
+      hi = std::max(hi, field.body[i]);
+    }
+    return n;
+  };
+  for (int z = 1; z <= box.n[2]; ++z)
+    for (int y = 1; y <= box.n[1]; ++y) {
+      ++c.rows;
+      std::int32_t lo = 0, hi = 0;
+      const std::size_t n = bodies_in(1, box.n[0] + 1, y, z, lo, hi);
+      if (n == 0) continue;
+      c.covered_cells += n;
+      ++c.porous_rows;
+      c.one_body_rows += lo == hi ? 1 : 0;
+      for (int x = 1; x <= box.n[0]; x += kVectorCells) {
+        ++c.vectors;
+        const std::size_t m = bodies_in(x, std::min(x + kVectorCells, box.n[0] + 1), y, z, lo, hi);
+        c.fluid_vectors += m == 0 ? 1 : 0;
+        c.mixed_vectors += m > 0 && lo != hi ? 1 : 0;
+      }
+    }
+  return c;
+}
 
 Timing time_steps(FluidSolver<double>& s, int steps) {
   const double c0 = cpu_seconds(), w0 = wall_seconds();
@@ -134,23 +183,22 @@ int main(int argc, char** argv) {
     }
     const hlbm::UpdateStats st = bodies.update(states);
     const LocalBox& box = with.box();
-    std::size_t porous = 0, rows = 0, porous_rows = 0;
-    const auto& d = with.porous().d;
-    for (int z = 1; z <= box.n[2]; ++z)
-      for (int y = 1; y <= box.n[1]; ++y) {
-        std::size_t n = 0;
-        for (int x = 1; x <= box.n[0]; ++x) n += d[box.index(x, y, z)] < 1.0f ? 1 : 0;
-        porous += n;
-        ++rows;
-        porous_rows += n > 0 ? 1 : 0;
-      }
+    const RowComposition rc_rows = row_composition(box, with.porous());
     const double cells = double(box.interior_cells());
     std::printf(
         "# lattice_bench %s: %d x %d x %d cells, %zu bodies, band %zu cells, d < 1: %zu cells "
         "(%.1f %%), rows with d < 1: %.1f %%%s\n",
-        argv[1], box.n[0], box.n[1], box.n[2], states.size(), st.band, porous,
-        100.0 * double(porous) / cells, 100.0 * double(porous_rows) / double(rows),
-        force ? ", uniform force" : "");
+        argv[1], box.n[0], box.n[1], box.n[2], states.size(), st.band, rc_rows.covered_cells,
+        100.0 * double(rc_rows.covered_cells) / cells,
+        100.0 * double(rc_rows.porous_rows) / double(rc_rows.rows), force ? ", uniform force" : "");
+    std::printf(
+        "# rows with d < 1: %.1f %% of them with one body's cells only; vectors of %d cells on "
+        "those rows: %.1f %% with several bodies' cells, %.1f %% without a cell of d < 1\n",
+        100.0 * double(rc_rows.one_body_rows) /
+            double(std::max<std::size_t>(rc_rows.porous_rows, 1)),
+        kVectorCells,
+        100.0 * double(rc_rows.mixed_vectors) / double(std::max<std::size_t>(rc_rows.vectors, 1)),
+        100.0 * double(rc_rows.fluid_vectors) / double(std::max<std::size_t>(rc_rows.vectors, 1)));
     if (fingerprint > 0) {
       for (int k = 0; k < fingerprint; ++k) with.step();
       std::vector<double> pop;

@@ -2,7 +2,7 @@
 # and y unevenly) and requires every dump to equal the 1-rank dump byte for byte.
 # Variables: MPIRUN (list: launcher and its options), EXE, WORK (scratch folder).
 file(MAKE_DIRECTORY ${WORK})
-set(cases "1:0:0:0" "2:0:0:0" "3:0:0:0" "2:2:1:1" "3:1:3:1")
+set(cases "1:0:0:0" "2:0:0:0" "3:0:0:0" "2:2:1:1" "3:1:3:1" "3:3:1:1")
 set(index 0)
 foreach(c IN LISTS cases)
   string(REPLACE ":" ";" c "${c}")

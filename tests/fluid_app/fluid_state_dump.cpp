@@ -39,7 +39,7 @@ void run(const char* file, std::array<int, 3> dims) {
   const LocalBox& b = s.box();
   PorousField<double>& pf = s.porous();
   pf.bodies = {{{0.5, 5.0, 5.0}, {0.01, 0.0, -0.01}, {0.0, 0.02, 0.01}},
-               {{7.0, 4.0, 6.0}, {0.0, 0.02, 0.0}, {0.0, 0.0, 0.0}}};
+               {{7.0, 4.0, 6.0}, {0.0, 0.02, 0.0}, {0.01, -0.02, 0.015}}};
   for (int z = 1; z <= b.n[2]; ++z)
     for (int y = 1; y <= b.n[1]; ++y)
       for (int x = 1; x <= b.n[0]; ++x) {
