@@ -139,6 +139,21 @@ void BodyField<T>::queue_row(const Tracked& t, std::size_t row, const std::uint6
     added += static_cast<std::size_t>(std::popcount(bits[k]));
   queue_.resize(count + added);
   batch_.resize(count + added);
+  // The field's lines of the queued cells, read by the interior map once the batch is looked up.
+  if (added) {
+    std::size_t lo = 0, hi = 0;
+    for (std::size_t k = 0; k < static_cast<std::size_t>(w.words); ++k)
+      if (bits[k]) {
+        hi = 64 * k + 63 - static_cast<std::size_t>(std::countl_zero(bits[k]));
+        if (!lo) lo = 64 * k + static_cast<std::size_t>(std::countr_zero(bits[k])) + 1;
+      }
+    const float* d = field_.d.data() + first;
+    const std::int32_t* b = field_.body.data() + first;
+    for (int x = w.l[0][lo - 1]; x <= w.l[0][hi] + 15; x += 16) {
+      __builtin_prefetch(d + std::min(x, w.l[0][hi]));
+      __builtin_prefetch(b + std::min(x, w.l[0][hi]));
+    }
+  }
   for (std::size_t k = 0; k < static_cast<std::size_t>(w.words); ++k)
     for (std::uint64_t left = bits[k]; left; left &= left - 1, ++count) {
       const std::size_t i = 64 * k + static_cast<std::size_t>(std::countr_zero(left));
@@ -179,7 +194,7 @@ void BodyField<T>::evaluate_queue(std::int32_t slot, UpdateStats& stats) {
   }
 }
 
-// A cell whose interior owner changes is reset by combine(); the band cells (old and new) are
+// A cell whose interior owner changes is reset by reset_touched(); the band cells (old and new) are
 // added by the callers. The interior map is the field itself: d = 0 exactly where a body's
 // interior covers the cell (band cells have 0 < d < 1), with that body's index, so no per-cell
 // map of its own is kept (4 B per cell, docs/performance.md "Memory per cell"). The field is
@@ -475,7 +490,7 @@ void BodyField<T>::follow_band(std::int32_t slot, std::vector<BandCell>& band, U
     }
   }
 
-  // The new band, and the old band cells that left it: combine() resets both.
+  // The new band, and the old band cells that left it: reset_touched() resets both.
   for (std::size_t row = 0; row < w.rows; ++row) {
     const int y = w.l[1][row % ny], z = w.l[2][row / ny];
     for (std::size_t k = 0; k < words; ++k) {
@@ -508,25 +523,43 @@ double BodyField<T>::displacement(const Tracked& t, const Tracked& next) const {
   return dx.norm() + chord * arm;
 }
 
-// Two-body rule: a cell covered by several bodies gets the smallest porosity, d = min_k d_k,
-// and the index of the body with that porosity (the most solid one; ties: smallest id). The
-// cells re-evaluated in this update start from the interior map (d = 0 inside a body, else
-// fluid with body -1); then every band of every body lowers them.
+// The cells the body just updated touched (its old and new band, its interior changes) start
+// over from the interior map: d = 0 keeps its body (written by mark_interior(), of this body or
+// another), the rest become fluid with body -1, to be lowered by the bands in combine(). Done
+// per body while the cells' lines are in cache. Later bodies of the update read only whether a
+// cell is d = 0 (mark_interior()), which this does not change.
 template <class T>
-void BodyField<T>::combine(std::span<const std::int32_t> order) {
-  for (std::uint32_t c : touched_) {
-    // Interior cells (d = 0, written by evaluate()) keep their body; the rest start as fluid.
+void BodyField<T>::reset_touched() {
+  for (std::uint32_t c : touched_)
     if (field_.d[c] != 0.0f) {
       field_.d[c] = 1.0f;
       field_.body[c] = -1;
     }
-  }
-  for (std::int32_t slot : order)
-    for (const BandCell& b : tracked_[static_cast<std::size_t>(slot)].band)
+  touched_.clear();
+}
+
+// Two-body rule: a cell covered by several bodies gets the smallest porosity, d = min_k d_k,
+// and the index of the body with that porosity (the most solid one; ties: smallest id). Every
+// band cell was reset by reset_touched(); every band of every body lowers them.
+template <class T>
+void BodyField<T>::combine(std::span<const std::int32_t> order) {
+  // The cells lie scattered over the field, beyond what the hardware prefetches: ask for the
+  // lines of the cell kAhead places further.
+  constexpr std::size_t kAhead = 16;
+  for (std::int32_t slot : order) {
+    const std::vector<BandCell>& band = tracked_[static_cast<std::size_t>(slot)].band;
+    for (std::size_t k = 0; k < band.size(); ++k) {
+      if (k + kAhead < band.size()) {
+        __builtin_prefetch(&field_.d[band[k + kAhead].cell], 1);
+        __builtin_prefetch(&field_.body[band[k + kAhead].cell], 1);
+      }
+      const BandCell& b = band[k];
       if (b.d < field_.d[b.cell]) {
         field_.d[b.cell] = b.d;
         field_.body[b.cell] = slot;
       }
+    }
+  }
 }
 
 template <class T>
@@ -555,7 +588,10 @@ UpdateStats BodyField<T>::update(std::span<const BodyState> states, UpdateMode m
   for (std::size_t slot = 0; slot < tracked_.size(); ++slot) {
     Tracked& t = tracked_[slot];
     if (t.id < 0 || std::binary_search(ids.begin(), ids.end(), t.id)) continue;
-    if (mode == UpdateMode::incremental) remove(static_cast<std::int32_t>(slot), stats);
+    if (mode == UpdateMode::incremental) {
+      remove(static_cast<std::int32_t>(slot), stats);
+      reset_touched();
+    }
     slots_.erase(t.id);
     t = Tracked{};
     field_.bodies.set(slot, PorousBody<T>{});
@@ -605,6 +641,7 @@ UpdateStats BodyField<T>::update(std::span<const BodyState> states, UpdateMode m
     }
     t.band = std::move(band);
     stats.band += t.band.size();
+    reset_touched();
 
     // The centre is wrapped again in T: t.x < L may round up to L.
     PorousBody<T> k;

@@ -134,7 +134,7 @@ class BodyField {
   PorousField<T>& field_;
   std::vector<Tracked> tracked_;  // by slot
   std::unordered_map<std::int64_t, std::int32_t> slots_;
-  std::vector<std::uint32_t> touched_;  // cells evaluated in this update
+  std::vector<std::uint32_t> touched_;  // cells touched by the body being updated
   Window window_;                       // band search scratch
   // The cells of batch_: cell index and window row and x index (grown with batch_).
   struct Queue {
@@ -162,6 +162,7 @@ class BodyField {
   void scan(std::int32_t slot, std::vector<BandCell>& band, UpdateStats& stats);
   void remove(std::int32_t slot, UpdateStats& stats);
   void follow_band(std::int32_t slot, std::vector<BandCell>& band, UpdateStats& stats);
+  void reset_touched();
   void combine(std::span<const std::int32_t> order);
   double displacement(const Tracked& t, const Tracked& next) const;
 };
