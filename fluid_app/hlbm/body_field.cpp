@@ -139,19 +139,20 @@ void BodyField<T>::queue_row(const Tracked& t, std::size_t row, const std::uint6
     added += static_cast<std::size_t>(std::popcount(bits[k]));
   queue_.resize(count + added);
   batch_.resize(count + added);
-  // The field's lines of the queued cells, read by the interior map once the batch is looked up.
+  // Ask now for the field's lines (both arrays) under the queued cells, from the first to the
+  // last: the interior map reads them once the batch is looked up, and on a large lattice they
+  // are rarely in cache. The window's x list is ascending.
   if (added) {
-    std::size_t lo = 0, hi = 0;
-    for (std::size_t k = 0; k < static_cast<std::size_t>(w.words); ++k)
-      if (bits[k]) {
-        hi = 64 * k + 63 - static_cast<std::size_t>(std::countl_zero(bits[k]));
-        if (!lo) lo = 64 * k + static_cast<std::size_t>(std::countr_zero(bits[k])) + 1;
-      }
-    const float* d = field_.d.data() + first;
-    const std::int32_t* b = field_.body.data() + first;
-    for (int x = w.l[0][lo - 1]; x <= w.l[0][hi] + 15; x += 16) {
-      __builtin_prefetch(d + std::min(x, w.l[0][hi]));
-      __builtin_prefetch(b + std::min(x, w.l[0][hi]));
+    std::size_t k0 = 0, k1 = static_cast<std::size_t>(w.words) - 1;
+    while (!bits[k0]) ++k0;
+    while (!bits[k1]) --k1;
+    const int x0 = w.l[0][64 * k0 + static_cast<std::size_t>(std::countr_zero(bits[k0]))];
+    const int x1 = w.l[0][64 * k1 + 63 - static_cast<std::size_t>(std::countl_zero(bits[k1]))];
+    for (int x = x0;; x += 16) {  // 16 cells: one 64-byte line of either array
+      const int c = std::min(x, x1);
+      __builtin_prefetch(&field_.d[first + static_cast<std::uint32_t>(c)]);
+      __builtin_prefetch(&field_.body[first + static_cast<std::uint32_t>(c)]);
+      if (c == x1) break;
     }
   }
   for (std::size_t k = 0; k < static_cast<std::size_t>(w.words); ++k)
@@ -194,8 +195,8 @@ void BodyField<T>::evaluate_queue(std::int32_t slot, UpdateStats& stats) {
   }
 }
 
-// A cell whose interior owner changes is reset by reset_touched(); the band cells (old and new) are
-// added by the callers. The interior map is the field itself: d = 0 exactly where a body's
+// A cell whose interior owner changes is reset by reset_touched(); the band cells (old and new)
+// are added by the callers. The interior map is the field itself: d = 0 exactly where a body's
 // interior covers the cell (band cells have 0 < d < 1), with that body's index, so no per-cell
 // map of its own is kept (4 B per cell, docs/performance.md "Memory per cell"). The field is
 // read by the kernel only after the update, once combine() has run.
