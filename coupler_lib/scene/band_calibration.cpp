@@ -77,4 +77,12 @@ std::string band_calibration_range() {
   return "[0.505, 3]";
 }
 
+bool band_calibration_checked(double tau) {
+  return tau >= 0.52 && tau <= 1.5;
+}
+
+std::string band_calibration_checked_range() {
+  return "[0.52, 1.5]";
+}
+
 }  // namespace lbdem

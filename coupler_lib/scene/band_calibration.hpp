@@ -23,4 +23,10 @@ std::optional<double> band_radius_excess_cells(double tau, PorosityLookup lookup
 // "[0.505, 3]": the measured range of tau, for messages.
 std::string band_calibration_range();
 
+// Whether the calibrated drag was checked at this tau: tools/band_size_series.py, spheres of
+// radius 3 to 9 cells over 16 poses from tau 0.52 to 1.5 (docs/method.md). Outside that range
+// (inside the measured one) the table still applies, unchecked.
+bool band_calibration_checked(double tau);
+std::string band_calibration_checked_range();  // "[0.52, 1.5]", for messages
+
 }  // namespace lbdem

@@ -214,6 +214,13 @@ int run_typed(AppContext& ctx) {
         "cells, so the fluid sees every surface moved inward by that much (docs/method.md)",
         scene.fluid->tau, word_of(kPorosityLookupWords, scene.fluid->porosity_lookup),
         *band_radius_excess_cells(scene.fluid->tau, scene.fluid->porosity_lookup));
+  if (scene.fluid->hydrodynamic_radius == HydrodynamicRadius::calibrated &&
+      !band_calibration_checked(scene.fluid->tau))
+    ctx.log->warn(
+        "{}: fluid.tau {} lies outside {}, where the calibrated drag was checked (docs/method.md, "
+        "\"Hydrodynamic radius calibration\"): the measured offset applies, its accuracy is not "
+        "known there",
+        scene.file, scene.fluid->tau, band_calibration_checked_range());
   // A restart's layout comes from the checkpoint's record of the work (rebalance.hpp).
   std::string restart_from;
   LayoutChoice layout;

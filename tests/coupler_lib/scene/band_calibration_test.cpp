@@ -39,6 +39,10 @@ TEST(BandCalibration, TableGivesTheMeasuredExcessAndFallsWithTau) {
               1e-12);
   EXPECT_FALSE(band_radius_excess_cells(0.5001, PorosityLookup::nearest));
   EXPECT_FALSE(band_radius_excess_cells(3.5, PorosityLookup::nearest));
+  // The drag was checked from tau 0.52 to 1.5 (tools/band_size_series.py); outside, inside the
+  // measured range, the table applies and fluid_app warns.
+  EXPECT_TRUE(band_calibration_checked(0.52) && band_calibration_checked(1.5));
+  EXPECT_FALSE(band_calibration_checked(0.51) || band_calibration_checked(2.0));
 }
 
 const char* kCoupled = R"(

@@ -23,6 +23,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <string>
@@ -67,9 +68,12 @@ struct Case {
   int n = 16;       // box edge, cells
   double size = 8;  // diameter or edge, cells
   double tau = 0.8;
-  double reference = 0;  // K (drag) or T / (8 pi mu a^3 Omega) (spin); 0: none (spread only)
-  double tolerance = 0;  // of the mean against the reference
-  double per_pose = 0;   // > 0: every pose within this of the reference as well
+  double reference = 0;         // K (drag) or T / (8 pi mu a^3 Omega) (spin); 0: none (spread only)
+  double tolerance = 0;         // of the mean against the reference
+  double per_pose = 0;          // > 0: every pose within this of the reference as well
+  bool spread_asserted = true;  // (max - min) / mean <= 2 %
+  // Band offset in cells (the surface moved inward by it); NaN: the calibrated rule's.
+  double offset_cells = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct Pose {
@@ -94,6 +98,17 @@ std::vector<Pose> poses() {
   return out;
 }
 
+// Radius of the sphere (of the volume-equivalent sphere for a cube), cells.
+double radius(const Case& c) {
+  return c.kind == "sphere" ? c.size / 2 : c.size * std::cbrt(3 / (4 * std::numbers::pi));
+}
+
+// The surface's offset in cells: the case's, or the calibrated rule's.
+double band_offset_cells(const Case& c) {
+  return std::isnan(c.offset_cells) ? *band_radius_excess_cells(c.tau, PorosityLookup::nearest)
+                                    : c.offset_cells;
+}
+
 // The shape as the scene catalogue builds it for the fluid (coupler_lib/scene/shape_catalogue.cpp).
 Shape make_shape(const Case& c, double dx) {
   ShapeParams p;
@@ -104,13 +119,22 @@ Shape make_shape(const Case& c, double dx) {
   p.extents = {e, e, e};
   p.clump.source = ClumpSource::fill;
   p.clump.spheres = 1;  // the clump plays no part here
-  p.hydrodynamic_offset = *band_radius_excess_cells(c.tau, PorosityLookup::nearest) * dx;
+  p.hydrodynamic_offset = band_offset_cells(c) * dx;
   return build_shape(p, 0.5 * dx);
 }
 
-// Radius of the sphere (of the volume-equivalent sphere for a cube), cells.
-double radius(const Case& c) {
-  return c.kind == "sphere" ? c.size / 2 : c.size * std::cbrt(3 / (4 * std::numbers::pi));
+// The sphere's hydrodynamic radius a_h in cells (Ladd 1994): the radius at which an exact sphere
+// in the same array would feel the measured K, K_SA(phi(a_h)) a_h / a = K, by bisection (the
+// left side grows with a_h). The measure behind the band calibration (tools/calibrate_band.py).
+double hydrodynamic_radius_cells(const Case& c, double k) {
+  const double a = radius(c), cells = double(c.n) * c.n * c.n;
+  double lo = 0.5 * a, hi = 1.5 * a;
+  for (int i = 0; i < 100; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    const double phi = 4 * std::numbers::pi * mid * mid * mid / (3 * cells);
+    (sangani_acrivos_k(phi) * mid / a < k ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
 }
 
 struct Result {
@@ -205,6 +229,10 @@ void check_case(const Case& c) {
               (c.kind == "sphere" ? std::numbers::pi / 6 : 1.0) * std::pow(c.size / c.n, 3), c.tau,
               shape.voxels.n[0]);
   std::vector<double> values;
+  // Sphere drag: a_h - a per pose, and the band's own excess a_h - a + offset (what the
+  // calibration must remove; docs/method.md "Hydrodynamic radius calibration").
+  const bool radius_excess = c.kind == "sphere" && c.load == Load::drag;
+  double mean_excess = 0;  // summed, then divided
   FluidSolver<double> solver(lattice(c), MPI_COMM_SELF);
   for (const Pose& p : poses()) {
     const Result r = steady_load(c, solver, shape, p);
@@ -214,6 +242,11 @@ void check_case(const Case& c) {
                 r.value);
     if (c.reference > 0) std::printf(" (%+.2f %%)", 100 * (r.value / c.reference - 1));
     if (c.load == Load::drag) std::printf(", lever arm %.3f cells", r.arm);
+    if (radius_excess) {
+      const double excess = hydrodynamic_radius_cells(c, r.value) - radius(c);
+      mean_excess += excess;
+      std::printf(", a_h - a %+.4f cells", excess);
+    }
     std::printf(", %d steps\n", r.steps);
     std::fflush(stdout);
     if (c.per_pose > 0) {
@@ -228,22 +261,31 @@ void check_case(const Case& c) {
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::printf("%s over %zu poses: mean %.5f", what, values.size(), mean);
   if (c.reference > 0)
-    std::printf(" (reference %.4f, %+.2f %%, tolerance %.0f %%)", c.reference,
+    std::printf(" (reference %.4f, %+.2f %%, tolerance %g %%)", c.reference,
                 100 * (mean / c.reference - 1), 100 * c.tolerance);
   std::printf(", (max - min) / mean %.2f %% (bound 2 %%), %.1f s\n", 100 * spread, wall);
+  mean_excess /= values.size();
+  if (radius_excess)
+    std::printf(
+        "a_h - a over %zu poses: mean %+.4f cells with offset %+.4f cells: band excess %+.4f "
+        "cells\n",
+        values.size(), mean_excess, band_offset_cells(c), mean_excess + band_offset_cells(c));
   // The lines docs/validation-table.md is generated from (tools/validation_table.py).
   const char* name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  std::printf(
-      "[validation] %s: spread over %zu poses error %.3e, tolerance %.1e (run time %.2f s, "
-      "1 rank)\n",
-      name, values.size(), spread, 0.02, wall);
+  if (c.spread_asserted)
+    std::printf(
+        "[validation] %s: spread over %zu poses error %.3e, tolerance %.1e (run time %.2f s, "
+        "1 rank)\n",
+        name, values.size(), spread, 0.02, wall);
   if (c.reference > 0)
     std::printf(
         "[validation] %s: mean %s against the reference error %.3e, tolerance %.1e (run "
         "time %.2f s, 1 rank)\n",
         name, what, std::abs(mean / c.reference - 1), c.tolerance, wall);
   std::fflush(stdout);
-  EXPECT_LE(spread, 0.02);
+  if (c.spread_asserted) {
+    EXPECT_LE(spread, 0.02);
+  }
   if (c.reference > 0) {
     EXPECT_LE(std::abs(mean / c.reference - 1), c.tolerance);
   }
@@ -292,6 +334,46 @@ TEST(PoseInvariance, SphereDragDenseD28Phi0343) {
   check_case(c);
 }
 
+// The calibrated drag at two sizes (docs/method.md, "Hydrodynamic radius calibration"): a sphere
+// in the size series' box of 2 d (phi 0.065) against Sangani & Acrivos, mean over 16 poses
+// (tools/band_size_series.py runs the whole series). The spread is not asserted here (radius 3:
+// 3-5 %); the cases above hold the bound at their sizes.
+Case calibrated_sphere(double d, double tau, double tolerance) {
+  Case c;
+  c.kind = "sphere";
+  c.n = int(2 * d);
+  c.size = d;
+  c.tau = tau;
+  c.reference = sangani_acrivos_k(phi_of(c));
+  c.tolerance = tolerance;
+  c.spread_asserted = false;
+  return c;
+}
+
+// Radius 6 cells: measured -0.57 % (tau 0.6) and -0.81 % (tau 1); tolerance 1 % and 1.5 %
+// (1.75x, 1.85x).
+TEST(PoseInvariance, CalibratedR6Tau06) {
+  check_case(calibrated_sphere(12, 0.6, 0.01));
+}
+
+TEST(PoseInvariance, CalibratedR6Tau1) {
+  check_case(calibrated_sphere(12, 1.0, 0.015));
+}
+
+// Radius 3 cells, KNOWN OFF (disabled; ctest pose_invariance_known_off_CalibratedR3Tau06 and
+// ..._CalibratedR3Tau1 run them and check the printed mean lies in its recorded band): the rule,
+// one offset per tau for every size, over-erodes a small sphere, whose band holds less excess
+// (a_h - a = a(tau) + b(tau) / R, b < 0); measured -4.72 % and -6.53 % against the tolerances
+// of radius 6. The size term that removes it moves three settling validations out of their
+// tolerances (docs/method.md).
+TEST(PoseInvariance, DISABLED_CalibratedR3Tau06) {
+  check_case(calibrated_sphere(6, 0.6, 0.01));
+}
+
+TEST(PoseInvariance, DISABLED_CalibratedR3Tau1) {
+  check_case(calibrated_sphere(6, 1.0, 0.015));
+}
+
 // Spinning sphere (the torque path), d = 8 cells in a box of 4 d as coupled_sphere_spin:
 // T against Stokes' 8 pi mu a^3 Omega, tolerance 5 % (that test's). KNOWN OFF, the spread
 // (disabled; ctest pose_invariance_known_off_SphereSpinD8 runs it and checks the printed spread
@@ -320,16 +402,18 @@ TEST(PoseInvariance, DISABLED_CubeDragDiluteD8) {
   check_case(c);
 }
 
-// Any case from the environment, for the measurements of docs/validation.md section 7:
-// POSE_CASE="sphere drag 32 27.79 0.8 15.4" (kind, load, box, size in cells, tau, reference or 0).
+// Any case from the environment, for the measurements of docs/validation.md section 7 and of
+// the band calibration (tools/band_size_series.py):
+// POSE_CASE="sphere drag 32 27.79 0.8 15.4" (kind, load, box, size in cells, tau, reference or
+// 0), optionally followed by the band offset in cells (default: the calibrated rule's).
 TEST(PoseInvariance, Measure) {
   const char* env = std::getenv("POSE_CASE");
   if (env == nullptr) GTEST_SKIP() << "set POSE_CASE to measure a case";
   char kind[16], load[16];
   Case c;
-  ASSERT_EQ(
-      std::sscanf(env, "%15s %15s %d %lf %lf %lf", kind, load, &c.n, &c.size, &c.tau, &c.reference),
-      6);
+  const int read = std::sscanf(env, "%15s %15s %d %lf %lf %lf %lf", kind, load, &c.n, &c.size,
+                               &c.tau, &c.reference, &c.offset_cells);
+  ASSERT_GE(read, 6) << "POSE_CASE: kind load box size tau reference [offset]";
   c.kind = kind;
   c.load = std::string(load) == "spin" ? Load::spin : Load::drag;
   c.tolerance = 1.0;
