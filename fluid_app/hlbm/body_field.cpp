@@ -179,8 +179,8 @@ void BodyField<T>::evaluate_queue(std::int32_t slot, UpdateStats& stats) {
   }
 }
 
-// A cell whose interior owner changes is reset by combine(); the band cells (old and new) are
-// added by the callers. The interior map is the field itself: d = 0 exactly where a body's
+// A cell whose interior owner changes is written here and left alone by combine() (it resets
+// only cells with d != 0). The interior map is the field itself: d = 0 exactly where a body's
 // interior covers the cell (band cells have 0 < d < 1), with that body's index, so no per-cell
 // map of its own is kept (4 B per cell, docs/performance.md "Memory per cell"). The field is
 // read by the kernel only after the update, once combine() has run.
@@ -195,12 +195,10 @@ void BodyField<T>::mark_interior(std::int32_t slot, std::uint32_t cell, float d,
       if (in >= 0) ++stats.interior_conflicts;
       fd = 0.0f;
       fb = slot;
-      touched_.push_back(cell);
     }
   } else if (in == slot) {
     fd = 1.0f;
     fb = -1;
-    touched_.push_back(cell);
   }
 }
 
@@ -241,9 +239,7 @@ void BodyField<T>::scan(std::int32_t slot, std::vector<BandCell>& band, UpdateSt
     const float d = batch_.d[k];
     if (d > 0.0f && d < 1.0f) {
       const std::size_t row = queue_.row[k];
-      band.push_back(
-          {queue_.cell[k], d, local(w.l[0][queue_.i[k]], w.l[1][row % ny], w.l[2][row / ny])});
-      touched_.push_back(queue_.cell[k]);
+      band.push_back({d, local(w.l[0][queue_.i[k]], w.l[1][row % ny], w.l[2][row / ny])});
     }
   }
 }
@@ -253,7 +249,7 @@ void BodyField<T>::scan(std::int32_t slot, std::vector<BandCell>& band, UpdateSt
 template <class T>
 void BodyField<T>::remove(std::int32_t slot, UpdateStats& stats) {
   Tracked& t = tracked_[static_cast<std::size_t>(slot)];
-  for (const BandCell& b : t.band) touched_.push_back(b.cell);
+  for (const BandCell& b : t.band) touched_.push_back(static_cast<std::uint32_t>(b.cell(sub_.box)));
   t.band.clear();
   tabulate_offsets(t);
   const auto lists = support(t);
@@ -265,7 +261,6 @@ void BodyField<T>::remove(std::int32_t slot, UpdateStats& stats) {
         if (field_.d[c] == 0.0f && field_.body[c] == slot) {  // its interior
           field_.d[c] = 1.0f;
           field_.body[c] = -1;
-          touched_.push_back(c);
         }
       }
 }
@@ -482,9 +477,7 @@ void BodyField<T>::follow_band(std::int32_t slot, std::vector<BandCell>& band, U
       const std::size_t word = row * words + k;
       for (std::uint64_t bits = w.band[word]; bits; bits &= bits - 1) {
         const std::size_t i = 64 * k + static_cast<std::size_t>(std::countr_zero(bits));
-        const auto c = static_cast<std::uint32_t>(box.index(w.l[0][i], y, z));
-        band.push_back({c, w.d[row * nx + i], local(w.l[0][i], y, z)});
-        touched_.push_back(c);
+        band.push_back({w.d[row * nx + i], local(w.l[0][i], y, z)});
       }
       for (std::uint64_t bits = w.old[word] & ~w.band[word]; bits; bits &= bits - 1) {
         const std::size_t i = 64 * k + static_cast<std::size_t>(std::countr_zero(bits));
@@ -510,23 +503,28 @@ double BodyField<T>::displacement(const Tracked& t, const Tracked& next) const {
 
 // Two-body rule: a cell covered by several bodies gets the smallest porosity, d = min_k d_k,
 // and the index of the body with that porosity (the most solid one; ties: smallest id). The
-// cells re-evaluated in this update start from the interior map (d = 0 inside a body, else
-// fluid with body -1); then every band of every body lowers them.
+// cells of the old and new bands start from the interior map (d = 0 inside a body, else fluid
+// with body -1); then every band of every body lowers them.
 template <class T>
 void BodyField<T>::combine(std::span<const std::int32_t> order) {
-  for (std::uint32_t c : touched_) {
-    // Interior cells (d = 0, written by evaluate()) keep their body; the rest start as fluid.
+  // Interior cells (d = 0, written by mark_interior()) keep their body; the rest start as fluid.
+  auto reset = [&](CellIndex c) {
     if (field_.d[c] != 0.0f) {
       field_.d[c] = 1.0f;
       field_.body[c] = -1;
     }
-  }
+  };
+  for (std::uint32_t c : touched_) reset(c);
   for (std::int32_t slot : order)
-    for (const BandCell& b : tracked_[static_cast<std::size_t>(slot)].band)
-      if (b.d < field_.d[b.cell]) {
-        field_.d[b.cell] = b.d;
-        field_.body[b.cell] = slot;
+    for (const BandCell& b : tracked_[static_cast<std::size_t>(slot)].band) reset(b.cell(sub_.box));
+  for (std::int32_t slot : order)
+    for (const BandCell& b : tracked_[static_cast<std::size_t>(slot)].band) {
+      const CellIndex c = b.cell(sub_.box);
+      if (b.d < field_.d[c]) {
+        field_.d[c] = b.d;
+        field_.body[c] = slot;
       }
+    }
 }
 
 template <class T>

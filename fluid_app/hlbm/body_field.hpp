@@ -85,11 +85,13 @@ class BodyField {
   }
   const LatticeFrame& frame() const { return frame_; }
 
-  // A cell of a body's porous band (0 < d_k < 1): index, d_k, local coordinates.
+  // A cell of a body's porous band (0 < d_k < 1): d_k and local coordinates, 12 B (the index
+  // follows from the coordinates by a multiply-add; the coordinates from an index would need
+  // divisions).
   struct BandCell {
-    std::uint32_t cell;
     float d;
-    std::array<std::uint16_t, 3> l;  // local coordinates (no index division to recover them)
+    std::array<std::uint16_t, 3> l;  // local coordinates
+    CellIndex cell(const LocalBox& box) const { return box.index(l[0], l[1], l[2]); }
   };
   // The band of the body in `slot` at the last update, in cell order.
   std::span<const BandCell> band(std::int32_t slot) const {
@@ -134,8 +136,9 @@ class BodyField {
   PorousField<T>& field_;
   std::vector<Tracked> tracked_;  // by slot
   std::unordered_map<std::int64_t, std::int32_t> slots_;
-  std::vector<std::uint32_t> touched_;  // cells evaluated in this update
-  Window window_;                       // band search scratch
+  // Cells that left a band in this update (combine() resets them with the new bands' cells).
+  std::vector<std::uint32_t> touched_;
+  Window window_;  // band search scratch
   // The cells of batch_: cell index and window row and x index (grown with batch_).
   struct Queue {
     std::vector<std::uint32_t> cell, row, i;
