@@ -138,6 +138,7 @@ void RunWatch<T>::observe(const FluidSolver<T>& solver, const StepInfo& info) {
 template <class T>
 int RunWatch<T>::finish() {
   if (failure_) return kExitUnstable;
+  if (stability_) stability_->remove_last_good();
   if (!reference_) return 0;
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();

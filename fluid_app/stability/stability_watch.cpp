@@ -109,6 +109,15 @@ int reporting_rank(const LocalScan& s, Instability kind, const FieldBlock& b, MP
 
 }  // namespace
 
+void StabilityWatch::remove_last_good() const {
+  int rank = 0;
+  MPI_Comm_rank(comm_, &rank);
+  if (rank != 0) return;
+  std::filesystem::path h5(last_good_file_);
+  std::filesystem::remove(h5);
+  std::filesystem::remove(h5.replace_extension(".xdmf"));
+}
+
 std::optional<StabilityFailure> StabilityWatch::check(long step, double time,
                                                       const MacroFields& fields) {
   return check(step, time, fields.box, std::max(fields.box.n[2], 1),

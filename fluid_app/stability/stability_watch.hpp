@@ -61,6 +61,9 @@ class StabilityWatch {
   // The same for a block the caller holds whole (one slab).
   std::optional<StabilityFailure> check(long step, double time, const MacroFields& fields);
   const std::string& last_good_file() const { return last_good_file_; }
+  // After a run the watch did not stop: removes the last good file and its XDMF (rank 0), so
+  // that a finished run leaves only the output its scene asks for.
+  void remove_last_good() const;
 
  private:
   StabilityParams params_;

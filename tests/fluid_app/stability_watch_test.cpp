@@ -111,6 +111,18 @@ TEST(StabilityWatch, EveryPassingCheckWritesTheLastGoodStateAFailingOneKeepsIt) 
   EXPECT_DOUBLE_EQ(rho.values[box.index(1, 1, 1)], 1000.0);
 }
 
+TEST(StabilityWatch, ARunItDidNotStopRemovesTheLastGoodFile) {
+  test::ScratchDir dir("lbdem_stability_done");
+  const std::string lg = dir.file("lg.h5");
+  StabilityWatch w(StabilityParams{}, kUnits, MPI_COMM_SELF, lg);
+  FieldBlock box{{2, 2, 2}, {0, 0, 0}, {2, 2, 2}};
+  EXPECT_FALSE(w.check(100, 1.0, calm(box)));
+  ASSERT_TRUE(std::filesystem::exists(lg));
+  w.remove_last_good();
+  EXPECT_FALSE(std::filesystem::exists(lg));
+  EXPECT_FALSE(std::filesystem::exists(dir.file("lg.xdmf")));
+}
+
 TEST(StabilityWatch, AFailureBeforeAnyPassingCheckNamesNoFile) {
   test::ScratchDir dir("lbdem_stability_first");
   const std::string lg = dir.file("lg.h5");
