@@ -257,8 +257,7 @@ void BodyField<T>::scan(std::int32_t slot, std::vector<BandCell>& band, UpdateSt
     const float d = batch_.d[k];
     if (d > 0.0f && d < 1.0f) {
       const std::size_t row = queue_.row[k];
-      band.push_back(
-          {queue_.cell[k], d, local(w.l[0][queue_.i[k]], w.l[1][row % ny], w.l[2][row / ny])});
+      band.push_back({d, local(w.l[0][queue_.i[k]], w.l[1][row % ny], w.l[2][row / ny])});
       touched_.push_back(queue_.cell[k]);
     }
   }
@@ -269,7 +268,7 @@ void BodyField<T>::scan(std::int32_t slot, std::vector<BandCell>& band, UpdateSt
 template <class T>
 void BodyField<T>::remove(std::int32_t slot, UpdateStats& stats) {
   Tracked& t = tracked_[static_cast<std::size_t>(slot)];
-  for (const BandCell& b : t.band) touched_.push_back(b.cell);
+  for (const BandCell& b : t.band) touched_.push_back(static_cast<std::uint32_t>(b.cell(sub_.box)));
   t.band.clear();
   tabulate_offsets(t);
   const auto lists = support(t);
@@ -499,7 +498,7 @@ void BodyField<T>::follow_band(std::int32_t slot, std::vector<BandCell>& band, U
       for (std::uint64_t bits = w.band[word]; bits; bits &= bits - 1) {
         const std::size_t i = 64 * k + static_cast<std::size_t>(std::countr_zero(bits));
         const auto c = static_cast<std::uint32_t>(box.index(w.l[0][i], y, z));
-        band.push_back({c, w.d[row * nx + i], local(w.l[0][i], y, z)});
+        band.push_back({w.d[row * nx + i], local(w.l[0][i], y, z)});
         touched_.push_back(c);
       }
       for (std::uint64_t bits = w.old[word] & ~w.band[word]; bits; bits &= bits - 1) {
@@ -551,13 +550,15 @@ void BodyField<T>::combine(std::span<const std::int32_t> order) {
     const std::vector<BandCell>& band = tracked_[static_cast<std::size_t>(slot)].band;
     for (std::size_t k = 0; k < band.size(); ++k) {
       if (k + kAhead < band.size()) {
-        __builtin_prefetch(&field_.d[band[k + kAhead].cell], 1);
-        __builtin_prefetch(&field_.body[band[k + kAhead].cell], 1);
+        const CellIndex ahead = band[k + kAhead].cell(sub_.box);
+        __builtin_prefetch(&field_.d[ahead], 1);
+        __builtin_prefetch(&field_.body[ahead], 1);
       }
       const BandCell& b = band[k];
-      if (b.d < field_.d[b.cell]) {
-        field_.d[b.cell] = b.d;
-        field_.body[b.cell] = slot;
+      const CellIndex c = b.cell(sub_.box);
+      if (b.d < field_.d[c]) {
+        field_.d[c] = b.d;
+        field_.body[c] = slot;
       }
     }
   }

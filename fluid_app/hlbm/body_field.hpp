@@ -85,11 +85,13 @@ class BodyField {
   }
   const LatticeFrame& frame() const { return frame_; }
 
-  // A cell of a body's porous band (0 < d_k < 1): index, d_k, local coordinates.
+  // A cell of a body's porous band (0 < d_k < 1): d_k and local coordinates, 12 B (the index
+  // follows from the coordinates by a multiply-add; the coordinates from an index would need
+  // divisions).
   struct BandCell {
-    std::uint32_t cell;
     float d;
-    std::array<std::uint16_t, 3> l;  // local coordinates (no index division to recover them)
+    std::array<std::uint16_t, 3> l;  // local coordinates
+    CellIndex cell(const LocalBox& box) const { return box.index(l[0], l[1], l[2]); }
   };
   // The band of the body in `slot` at the last update, in cell order.
   std::span<const BandCell> band(std::int32_t slot) const {

@@ -100,9 +100,9 @@ std::vector<BodyLoad> momentum_exchange(const BodyField<T>& bodies, const Popula
     // boundary links.
     LinkLoad sum;
     for (const auto& b : bodies.band(slot)) {
-      const auto l = sub.box.coords(b.cell);
-      if (field.body[b.cell] == slot && sub.box.interior(l[0], l[1], l[2]))
-        sum += link_load(sub, field, slot, CellIndex(b.cell), f);
+      const CellIndex c = b.cell(sub.box);
+      if (field.body[c] == slot && sub.box.interior(b.l[0], b.l[1], b.l[2]))
+        sum += link_load(sub, field, slot, c, f);
     }
     BodyLoad load;
     load.id = bodies.id_of(slot);

@@ -1,6 +1,6 @@
 #include "fluid_app/parallel/halo_exchange.hpp"
 
-#include "fluid_app/lattice/d3q19.hpp"
+#include <algorithm>
 
 namespace lbdem {
 
@@ -11,7 +11,7 @@ MPI_Datatype mpi_type() {
   return sizeof(T) == sizeof(double) ? MPI_DOUBLE : MPI_FLOAT;
 }
 
-// Range of one axis of the region beyond side e (e = 0: the interior span).
+// Range of one axis of the region beyond side e (e = 0: the interior span), inclusive.
 void region(int e, int n, int& lo, int& hi) {
   if (e == 0) {
     lo = 1;
@@ -21,13 +21,35 @@ void region(int e, int n, int& lo, int& hi) {
   }
 }
 
+std::size_t volume(const CellRange& r) {
+  if (r.empty()) return 0;
+  return std::size_t(r.hi[0] - r.lo[0]) * std::size_t(r.hi[1] - r.lo[1]) *
+         std::size_t(r.hi[2] - r.lo[2]);
+}
+
+// Calls f(j, k, offset) for every entry k of a list: population j, element offset
+// j * stride + cell.
+template <class F>
+void for_each_link(const auto& list, const LocalBox& b, CellIndex stride, F&& f) {
+  std::size_t k = 0;
+  for (int j = 0; j < d3q19::Q; ++j) {
+    const CellRange& r = list.cells[j];
+    if (r.empty()) continue;
+    for (int z = r.lo[2]; z < r.hi[2]; ++z)
+      for (int y = r.lo[1]; y < r.hi[1]; ++y) {
+        const CellIndex row = j * stride + b.index(0, y, z);
+        for (int x = r.lo[0]; x < r.hi[0]; ++x) f(j, k++, row + x);
+      }
+  }
+}
+
 }  // namespace
 
 template <class T>
 HaloExchange<T>::HaloExchange(const Decomposition& dec, CellIndex stride)
-    : comm_(dec.comm()), rank_(dec.rank()) {
+    : comm_(dec.comm()), rank_(dec.rank()), box_(dec.box()), stride_(stride) {
   using namespace d3q19;
-  const LocalBox& b = dec.box();
+  const LocalBox& b = box_;
   for (int ez = -1; ez <= 1; ++ez)
     for (int ey = -1; ey <= 1; ++ey)
       for (int ex = -1; ex <= 1; ++ex) {
@@ -36,33 +58,27 @@ HaloExchange<T>::HaloExchange(const Decomposition& dec, CellIndex stride)
         l.e = {ex, ey, ez};
         l.neighbour = dec.neighbour(ex, ey, ez);
         if (l.neighbour == MPI_PROC_NULL) continue;
-        int lo[3], hi[3];
-        for (int a = 0; a < 3; ++a) region(l.e[a], b.n[a], lo[a], hi[a]);
         for (int j = 0; j < Q; ++j) {
-          // Ghost g beyond side e whose source g - c_j is interior.
-          for (int z = lo[2]; z <= hi[2]; ++z)
-            for (int y = lo[1]; y <= hi[1]; ++y)
-              for (int x = lo[0]; x <= hi[0]; ++x)
-                if (b.interior(x - c[j][0], y - c[j][1], z - c[j][2]))
-                  l.ghost.push_back(j * stride + b.index(x, y, z));
-          // Interior y whose source y - c_j lies beyond side e.
-          int ilo[3], ihi[3];
+          CellRange& g = l.ghost.cells[j];
+          CellRange& in = l.inner.cells[j];
           for (int a = 0; a < 3; ++a) {
-            ilo[a] = l.e[a] > 0 ? b.n[a] : 1;
-            ihi[a] = l.e[a] < 0 ? 1 : b.n[a];
+            int lo = 0, hi = 0;
+            region(l.e[a], b.n[a], lo, hi);
+            // Ghost g beyond side e whose source g - c_j is interior (1 <= g - c_j <= n).
+            g.lo[a] = std::max(lo, 1 + c[j][a]);
+            g.hi[a] = std::min(hi, b.n[a] + c[j][a]) + 1;
+            // Interior y at side e (the layer 1 or n, or the whole span) whose source y - c_j
+            // lies beyond side e.
+            const int ilo = l.e[a] > 0 ? b.n[a] : 1, ihi = l.e[a] < 0 ? 1 : b.n[a];
+            in.lo[a] = std::max(ilo, lo + c[j][a]);
+            in.hi[a] = std::min(ihi, hi + c[j][a]) + 1;
           }
-          for (int z = ilo[2]; z <= ihi[2]; ++z)
-            for (int y = ilo[1]; y <= ihi[1]; ++y)
-              for (int x = ilo[0]; x <= ihi[0]; ++x) {
-                const int s[3] = {x - c[j][0], y - c[j][1], z - c[j][2]};
-                bool in = true;
-                for (int a = 0; a < 3; ++a) in = in && s[a] >= lo[a] && s[a] <= hi[a];
-                if (in) l.inner.push_back(j * stride + b.index(x, y, z));
-              }
+          l.ghost.size += volume(g);
+          l.inner.size += volume(in);
         }
         if (l.neighbour == rank_) continue;  // copied in place by finish(): no buffers
-        l.send.resize(l.inner.size());
-        l.recv.resize(l.ghost.size());
+        l.send.resize(l.inner.size);
+        l.recv.resize(l.ghost.size);
       }
 }
 
@@ -72,16 +88,17 @@ void HaloExchange<T>::start(T* f, bool after_odd) {
   ++traffic_.exchanges;
   for (int dir = 0; dir < 27; ++dir) {
     Links& l = links_[dir];
-    if (l.neighbour == MPI_PROC_NULL || l.neighbour == rank_ || l.ghost.empty()) continue;
+    if (l.neighbour == MPI_PROC_NULL || l.neighbour == rank_ || l.ghost.size == 0) continue;
     // The message from the neighbour at e carries its tag for direction -e.
     const int back = direction(-l.e[0], -l.e[1], -l.e[2]);
-    const std::vector<CellIndex>& from = after_odd ? l.ghost : l.inner;
-    l.send.resize(from.size());
-    l.recv.resize(after_odd ? l.inner.size() : l.ghost.size());
+    const LinkBoxes& from = after_odd ? l.ghost : l.inner;
+    l.send.resize(from.size);
+    l.recv.resize(after_odd ? l.inner.size : l.ghost.size);
     requests_.emplace_back();
     MPI_Irecv(l.recv.data(), int(l.recv.size()), mpi_type<T>(), l.neighbour, back, comm_,
               &requests_.back());
-    for (std::size_t k = 0; k < from.size(); ++k) l.send[k] = f[from[k]];
+    for_each_link(from, box_, stride_,
+                  [&](int, std::size_t k, CellIndex at) { l.send[k] = f[at]; });
     requests_.emplace_back();
     MPI_Isend(l.send.data(), int(l.send.size()), mpi_type<T>(), l.neighbour, dir, comm_,
               &requests_.back());
@@ -95,22 +112,28 @@ void HaloExchange<T>::finish(T* f, bool after_odd) {
   // Links to ourselves: what we send towards e arrives from -e.
   for (int dir = 0; dir < 27; ++dir) {
     const Links& l = links_[dir];
-    if (l.neighbour != rank_ || l.ghost.empty()) continue;
+    if (l.neighbour != rank_ || l.ghost.size == 0) continue;
+    // Population j's box of our list and of the back list are the same links, the one box
+    // shifted by the period: the same cells in the same order, a fixed offset apart.
     const Links& back = links_[direction(-l.e[0], -l.e[1], -l.e[2])];
-    if (after_odd) {
-      for (std::size_t k = 0; k < l.ghost.size(); ++k) f[back.inner[k]] = f[l.ghost[k]];
-    } else {
-      for (std::size_t k = 0; k < l.inner.size(); ++k) f[back.ghost[k]] = f[l.inner[k]];
+    const LinkBoxes& from = after_odd ? l.ghost : l.inner;
+    const LinkBoxes& to = after_odd ? back.inner : back.ghost;
+    std::array<CellIndex, d3q19::Q> shift{};
+    for (int j = 0; j < d3q19::Q; ++j) {
+      const CellRange &s = from.cells[j], &t = to.cells[j];
+      shift[j] = box_.index(t.lo[0], t.lo[1], t.lo[2]) - box_.index(s.lo[0], s.lo[1], s.lo[2]);
     }
+    for_each_link(from, box_, stride_,
+                  [&](int j, std::size_t, CellIndex at) { f[at + shift[j]] = f[at]; });
   }
   if (requests_.empty()) return;
   MPI_Waitall(int(requests_.size()), requests_.data(), MPI_STATUSES_IGNORE);
   requests_.clear();
   for (int dir = 0; dir < 27; ++dir) {
     const Links& l = links_[dir];
-    if (l.neighbour == MPI_PROC_NULL || l.neighbour == rank_ || l.ghost.empty()) continue;
-    const std::vector<CellIndex>& to = after_odd ? l.inner : l.ghost;
-    for (std::size_t k = 0; k < to.size(); ++k) f[to[k]] = l.recv[k];
+    if (l.neighbour == MPI_PROC_NULL || l.neighbour == rank_ || l.ghost.size == 0) continue;
+    for_each_link(after_odd ? l.inner : l.ghost, box_, stride_,
+                  [&](int, std::size_t k, CellIndex at) { f[at] = l.recv[k]; });
   }
 }
 

@@ -12,11 +12,16 @@
 //                              (what our cells streamed across the boundary).
 // Each link is copied once per step (5 values per face cell, 1 per edge cell), in a single
 // round of messages, so the exchange can overlap with the update of the inner cells.
+//
+// Each list is, per population j, one box of local cells (the cells of a face or edge region
+// whose source cell lies on the other side: the intersection of two boxes), visited in z, y, x
+// order, so no index list is stored (docs/performance.md "Memory per cell").
 #include <mpi.h>
 
 #include <array>
 #include <vector>
 
+#include "fluid_app/lattice/d3q19.hpp"
 #include "fluid_app/parallel/decomposition.hpp"
 
 namespace lbdem {
@@ -39,21 +44,26 @@ class HaloExchange {
   // Copies to ourselves (periodic axes with one rank), waits, unpacks.
   void finish(T* f, bool after_odd);
 
-  // Element offsets (population * stride + cell) of direction e's lists, for tests.
-  const std::vector<CellIndex>& ghost_list(int dir) const { return links_[dir].ghost; }
-  const std::vector<CellIndex>& inner_list(int dir) const { return links_[dir].inner; }
   static int direction(int ex, int ey, int ez) { return (ex + 1) + 3 * (ey + 1) + 9 * (ez + 1); }
   const HaloTraffic& traffic() const { return traffic_; }
 
  private:
+  // A list of links: population j's cells are the box cells[j], the list's entries run over
+  // j, then the box in z, y, x order.
+  struct LinkBoxes {
+    std::array<CellRange, d3q19::Q> cells{};
+    std::size_t size = 0;
+  };
   struct Links {
     int neighbour = MPI_PROC_NULL;
     std::array<int, 3> e{};
-    std::vector<CellIndex> ghost, inner;
+    LinkBoxes ghost, inner;
     std::vector<T> send, recv;
   };
   MPI_Comm comm_;
   int rank_;
+  LocalBox box_;
+  CellIndex stride_;
   std::array<Links, 27> links_;
   std::vector<MPI_Request> requests_;
   HaloTraffic traffic_;

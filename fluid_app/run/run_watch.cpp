@@ -79,18 +79,19 @@ RunWatch<T>::RunWatch(AppContext& ctx, FluidRun<T>& run, long long series_resume
 namespace {
 
 // Planes of the local block per slab when the stability check runs without field output:
-// the state is assembled a slab at a time (a few planes of 32 B per node), never whole.
-constexpr int kSlabPlanes = 8;
+// the state is assembled a slab at a time (32 B per node in double, and the slab's float
+// samples for the last good file), never whole.
+constexpr int kSlabPlanes = 2;
 
-// Density and velocity of local planes z0 .. z1-1 (interior, 1-based) into `out`, exactly as
+// Density and velocity of local planes z0 .. z1-1 (0-based) into `out`, exactly as
 // fill_macro_fields writes them (the solver's density and velocity per node).
 template <class T>
 void fill_slab(const FluidSolver<T>& solver, int z0, int z1, MacroFields& out) {
   const LocalBox& b = solver.box();
   out.resize(FieldBlock{
-      b.global, {b.offset[0], b.offset[1], b.offset[2] + z0 - 1}, {b.n[0], b.n[1], z1 - z0}});
+      b.global, {b.offset[0], b.offset[1], b.offset[2] + z0}, {b.n[0], b.n[1], z1 - z0}});
   std::size_t k = 0;
-  for (int z = z0; z < z1; ++z)
+  for (int z = z0 + 1; z <= z1; ++z)
     for (int y = 1; y <= b.n[1]; ++y)
       for (int x = 1; x <= b.n[0]; ++x, ++k) {
         const CellIndex c = b.index(x, y, z);
@@ -110,26 +111,15 @@ void RunWatch<T>::observe(const FluidSolver<T>& solver, const StepInfo& info) {
   const bool write = output_ && output_->due(step);
   if (!check && !write) return;
   if (check && !write) {
-    // Scan in slabs, then (if every rank passed) assemble the state again, slab by slab, into
-    // the watch's float copy: a second pass over the lattice every `interval` steps instead
-    // of a whole-lattice buffer of 32 B per node.
+    // One pass over the lattice: each slab is assembled, scanned and written to the last good
+    // candidate (StabilityWatch::check), then dropped.
     const LocalBox& b = solver.box();
     MacroFields slab;
-    LocalScan scan;
-    for (int z = 1; z <= b.n[2]; z += kSlabPlanes) {
-      fill_slab(solver, z, std::min(z + kSlabPlanes, b.n[2] + 1), slab);
-      merge_scan(scan, scan_block(slab, stability_->max_mach()), b.global);
-    }
-    const FieldBlock block{b.global, b.offset, b.n};
-    failure_ = stability_->check(step, info.time, scan, block, [&](LastGoodFields& lg) {
-      std::size_t at = 0;
-      for (int z = 1; z <= b.n[2]; z += kSlabPlanes) {
-        fill_slab(solver, z, std::min(z + kSlabPlanes, b.n[2] + 1), slab);
-        std::copy(slab.rho.begin(), slab.rho.end(), lg.rho.begin() + std::ptrdiff_t(at));
-        std::copy(slab.u.begin(), slab.u.end(), lg.u.begin() + std::ptrdiff_t(3 * at));
-        at += slab.rho.size();
-      }
-    });
+    failure_ = stability_->check(step, info.time, FieldBlock{b.global, b.offset, b.n}, kSlabPlanes,
+                                 [&](int z0, int z1) -> const MacroFields& {
+                                   fill_slab(solver, z0, z1, slab);
+                                   return slab;
+                                 });
     if (failure_ && ctx_.rank == 0) ctx_.log->error("{}", failure_->message);
     return;
   }
@@ -148,6 +138,7 @@ void RunWatch<T>::observe(const FluidSolver<T>& solver, const StepInfo& info) {
 template <class T>
 int RunWatch<T>::finish() {
   if (failure_) return kExitUnstable;
+  if (stability_) stability_->remove_last_good();
   if (!reference_) return 0;
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();

@@ -44,7 +44,8 @@ class RunWatch {
   void check_also_at(std::function<bool(long)> extra) { extra_ = std::move(extra); }
   // Bytes of the CSV series on disk (rank 0; -1 without), for checkpoints.
   long long series_bytes() { return output_ ? output_->series_bytes() : -1; }
-  // Collective, after the loop: the validation report; the exit code.
+  // Collective, after the loop: the validation report; the exit code. A run the stability
+  // watch did not stop leaves no last good file (it is a diagnosis).
   int finish();
 
  private:

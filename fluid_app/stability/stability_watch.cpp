@@ -109,30 +109,59 @@ int reporting_rank(const LocalScan& s, Instability kind, const FieldBlock& b, MP
 
 }  // namespace
 
-std::optional<StabilityFailure> StabilityWatch::check(long step, double time,
-                                                      const MacroFields& fields) {
-  return check(step, time, scan_block(fields, params_.max_mach), fields.box,
-               [&](LastGoodFields& lg) {
-                 std::copy(fields.rho.begin(), fields.rho.end(), lg.rho.begin());
-                 std::copy(fields.u.begin(), fields.u.end(), lg.u.begin());
-               });
+void StabilityWatch::remove_last_good() const {
+  int rank = 0;
+  MPI_Comm_rank(comm_, &rank);
+  if (rank != 0) return;
+  std::filesystem::path h5(last_good_file_);
+  std::filesystem::remove(h5);
+  std::filesystem::remove(h5.replace_extension(".xdmf"));
 }
 
-std::optional<StabilityFailure> StabilityWatch::check(
-    long step, double time, const LocalScan& s, const FieldBlock& box,
-    const std::function<void(LastGoodFields&)>& keep) {
+std::optional<StabilityFailure> StabilityWatch::check(long step, double time,
+                                                      const MacroFields& fields) {
+  return check(step, time, fields.box, std::max(fields.box.n[2], 1),
+               [&](int, int) -> const MacroFields& { return fields; });
+}
+
+std::optional<StabilityFailure> StabilityWatch::check(long step, double time, const FieldBlock& box,
+                                                      int planes, const Slabs& slabs) {
+  // The last good file's layout: what the field output writes, in float (a diagnostic
+  // snapshot; the run's own precision is in its checkpoints).
+  const FieldQuantities quantities{true, true, true, false};
+  const std::string candidate = last_good_file_ + ".tmp";
+  LocalScan s;
+  {
+    FieldFileWriter file(candidate, comm_, box.global, quantities, units_, step, time);
+    for (int z0 = 0; z0 < box.n[2]; z0 += planes) {
+      const MacroFields& slab = slabs(z0, std::min(z0 + planes, box.n[2]));
+      merge_scan(s, scan_block(slab, params_.max_mach), box.global);
+      file.write(slab);
+    }
+  }  // closed by every rank before the verdict below is reduced
+  int rank = 0;
+  MPI_Comm_rank(comm_, &rank);
   int kind = static_cast<int>(s.kind);
   MPI_Allreduce(MPI_IN_PLACE, &kind, 1, MPI_INT, MPI_MAX, comm_);
   if (kind == static_cast<int>(Instability::none)) {
     double mach = s.max_mach;
     MPI_Allreduce(MPI_IN_PLACE, &mach, 1, MPI_DOUBLE, MPI_MAX, comm_);
-    last_good_.resize(box);
-    keep(last_good_);
+    if (rank == 0) {
+      // A rename over the old file: at any moment one whole last good file exists.
+      const std::filesystem::path h5(last_good_file_);
+      std::filesystem::rename(candidate, h5);
+      std::filesystem::path xdmf = h5;
+      xdmf.replace_extension(".xdmf");
+      write_file_atomically(xdmf.string(), xdmf_text(volume_view(box.global, 1), quantities,
+                                                     units_.dx, {{time, h5.filename().string()}}));
+    }
+    MPI_Barrier(comm_);  // no rank creates the next candidate before the rename
     last_good_step_ = step;
     last_good_time_ = time;
     last_good_mach_ = mach;
     return std::nullopt;
   }
+  if (rank == 0) std::filesystem::remove(candidate);
 
   InstabilityReport r;
   r.kind = static_cast<Instability>(kind);
@@ -163,26 +192,7 @@ std::optional<StabilityFailure> StabilityWatch::check(
 
   StabilityFailure failure;
   failure.report = r;
-  if (last_good_step_ >= 0) {
-    const FieldView view = volume_view(last_good_.box.global, 1);
-    const FieldQuantities all{true, true, true, true};
-    MacroFields lg;  // in double only for the writer, and only now
-    lg.box = last_good_.box;
-    lg.rho.assign(last_good_.rho.begin(), last_good_.rho.end());
-    lg.u.assign(last_good_.u.begin(), last_good_.u.end());
-    write_field_file(last_good_file_, comm_, {view}, all, lg, units_, last_good_step_,
-                     last_good_time_);
-    int rank = 0;
-    MPI_Comm_rank(comm_, &rank);
-    if (rank == 0) {
-      const std::filesystem::path h5(last_good_file_);
-      std::filesystem::path xdmf = h5;
-      xdmf.replace_extension(".xdmf");
-      write_file_atomically(xdmf.string(), xdmf_text(view, all, units_.dx,
-                                                     {{last_good_time_, h5.filename().string()}}));
-    }
-    failure.last_good_file = last_good_file_;
-  }
+  if (last_good_step_ >= 0) failure.last_good_file = last_good_file_;
   failure.message = describe_instability(r, units_, failure.last_good_file);
   return failure;
 }

@@ -2,16 +2,17 @@
 // The stability watch: every `interval` steps it scans the macroscopic state for non-finite
 // values, non-positive density and Mach above the scene's limit. All fluid ranks agree on the
 // outcome through reductions on the side communicator, so either every rank goes on or every
-// rank stops with the same diagnosis. A passing check keeps the state it checked (density and
-// velocity, 4 numbers per node, in float: 16 B per node) so that a failing one can write the
-// last good state to HDF5. The checked state need not exist as a whole: the caller may scan it
-// in slabs and store it when asked (RunWatch does, docs/performance.md "Memory per cell").
+// rank stops with the same diagnosis. The last good state is kept on disk, not in memory: a
+// check writes the state it scans, slab by slab, to a candidate file next to the last good one
+// (density, velocity and pressure in float, the field file layout); when every rank passed,
+// the candidate replaces the last good file, otherwise it is removed and the last good file is
+// the one the diagnosis names. No rank holds more than one slab of the state, and a run killed
+// at any moment still leaves a whole last good file (docs/performance.md "Memory per cell").
 #include <mpi.h>
 
 #include <functional>
 #include <optional>
 #include <string>
-#include <vector>
 
 #include "coupler_lib/scene/fluid_output_section.hpp"
 #include "fluid_app/output/macro_fields.hpp"
@@ -23,20 +24,6 @@ struct StabilityFailure {
   InstabilityReport report;
   std::string last_good_file;  // empty when no check had passed before
   std::string message;         // describe_instability(...), identical on every rank
-};
-
-// The last good state: density and velocity as MacroFields holds them, rounded to float (a
-// diagnostic snapshot; written as double on failure).
-struct LastGoodFields {
-  FieldBlock box;
-  std::vector<float> rho;  // one per node
-  std::vector<float> u;    // three per node
-
-  void resize(const FieldBlock& b) {
-    box = b;
-    rho.resize(b.cells());
-    u.resize(3 * b.cells());
-  }
 };
 
 // The local part of a check (no communication): the worst kind on this block and the node
@@ -62,24 +49,27 @@ class StabilityWatch {
 
   bool due(long step) const { return params_.interval > 0 && step % params_.interval == 0; }
 
-  // Collective. nullopt: the state is fine and becomes last_good(); `fields` is left as it
-  // was (a float copy is kept). Otherwise the same failure on every rank, after the last good
-  // state was written collectively.
+  // The state of the rank's local planes [z0, z1) (0-based), as a block of the global lattice.
+  using Slabs = std::function<const MacroFields&(int z0, int z1)>;
+
+  // Collective. Scans the rank's block `box`, `planes` planes at a time, writing each slab to
+  // the candidate file as it goes. nullopt: every rank passed and the state is now the last
+  // good file. Otherwise the same failure on every rank, naming the last good file (as the
+  // last passing check left it).
+  std::optional<StabilityFailure> check(long step, double time, const FieldBlock& box, int planes,
+                                        const Slabs& slabs);
+  // The same for a block the caller holds whole (one slab).
   std::optional<StabilityFailure> check(long step, double time, const MacroFields& fields);
-  // The same for a state this rank scanned itself (`scan` over its block `box`): if every
-  // rank's state is fine, keep(last_good) stores it into the fields given (sized to `box`).
-  std::optional<StabilityFailure> check(long step, double time, const LocalScan& scan,
-                                        const FieldBlock& box,
-                                        const std::function<void(LastGoodFields&)>& keep);
-  const LastGoodFields& last_good() const { return last_good_; }
-  double max_mach() const { return params_.max_mach; }
+  const std::string& last_good_file() const { return last_good_file_; }
+  // After a run the watch did not stop: removes the last good file and its XDMF (rank 0), so
+  // that a finished run leaves only the output its scene asks for.
+  void remove_last_good() const;
 
  private:
   StabilityParams params_;
   UnitConverter units_;
   MPI_Comm comm_;
   std::string last_good_file_;
-  LastGoodFields last_good_;
   long last_good_step_ = -1;
   double last_good_time_ = 0;
   double last_good_mach_ = 0;

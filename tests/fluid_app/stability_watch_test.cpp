@@ -6,6 +6,7 @@
 #include <limits>
 #include <vector>
 
+#include "fluid_app/output/field_file.hpp"
 #include "fluid_app/stability/stability_watch.hpp"
 #include "output/output_test_support.hpp"
 
@@ -71,7 +72,7 @@ TEST(StabilityDiagnosis, MachMessageSaysWhereWhenAndWhatToChange) {
   EXPECT_NE(m.find("written to out/x_last_good.h5"), std::string::npos) << m;
 }
 
-TEST(StabilityWatch, FailingCheckWritesTheLastGoodState) {
+TEST(StabilityWatch, EveryPassingCheckWritesTheLastGoodStateAFailingOneKeepsIt) {
   test::ScratchDir dir("lbdem_stability");
   const std::string lg = dir.file("lg.h5");
   StabilityParams p;
@@ -81,15 +82,16 @@ TEST(StabilityWatch, FailingCheckWritesTheLastGoodState) {
   EXPECT_FALSE(w.due(25));
   FieldBlock box{{3, 2, 2}, {0, 0, 0}, {3, 2, 2}};
   MacroFields f = calm(box);
-  MacroFields buffer = f;
-  EXPECT_FALSE(w.check(10, 0.1, buffer));
+  EXPECT_FALSE(w.check(10, 0.1, f));
+  ASSERT_TRUE(std::filesystem::exists(lg));
+  EXPECT_DOUBLE_EQ(test::read_double_attribute(lg, "/", "time"), 0.1);
   f.rho[box.index(2, 1, 0)] = 1.25;  // still fine: becomes the last good state
-  buffer = f;
-  EXPECT_FALSE(w.check(20, 0.2, buffer));
-  // Kept as a float copy; the checked fields are left as they were.
-  EXPECT_EQ(w.last_good().rho, std::vector<float>(f.rho.begin(), f.rho.end()));
-  EXPECT_EQ(buffer.rho, f.rho);
-  EXPECT_FALSE(std::filesystem::exists(lg));
+  const MacroFields checked = f;
+  EXPECT_FALSE(w.check(20, 0.2, f));
+  EXPECT_EQ(f.rho, checked.rho);  // the checked fields are left as they were
+  EXPECT_DOUBLE_EQ(test::read_double_attribute(lg, "/", "time"), 0.2);
+  EXPECT_TRUE(std::filesystem::exists(dir.file("lg.xdmf")));
+  EXPECT_FALSE(std::filesystem::exists(lg + ".tmp"));
 
   MacroFields bad = f;
   bad.rho[box.index(1, 1, 1)] = std::numeric_limits<double>::infinity();
@@ -100,12 +102,78 @@ TEST(StabilityWatch, FailingCheckWritesTheLastGoodState) {
   EXPECT_EQ(failure->last_good_file, lg);
   EXPECT_NE(failure->message.find("not finite"), std::string::npos) << failure->message;
   EXPECT_NE(failure->message.find("step 20"), std::string::npos) << failure->message;
-  ASSERT_TRUE(std::filesystem::exists(lg));
-  EXPECT_TRUE(std::filesystem::exists(dir.file("lg.xdmf")));
+  // The failing state replaced nothing: the file is step 20's, the candidate is gone.
+  EXPECT_FALSE(std::filesystem::exists(lg + ".tmp"));
   EXPECT_DOUBLE_EQ(test::read_double_attribute(lg, "/", "time"), 0.2);
   const auto rho = test::read_dataset(lg, "/volume/density");
   ASSERT_EQ(rho.values.size(), 12u);
   EXPECT_DOUBLE_EQ(rho.values[box.index(2, 1, 0)], 1250.0);
+  EXPECT_DOUBLE_EQ(rho.values[box.index(1, 1, 1)], 1000.0);
+}
+
+TEST(StabilityWatch, ARunItDidNotStopRemovesTheLastGoodFile) {
+  test::ScratchDir dir("lbdem_stability_done");
+  const std::string lg = dir.file("lg.h5");
+  StabilityWatch w(StabilityParams{}, kUnits, MPI_COMM_SELF, lg);
+  FieldBlock box{{2, 2, 2}, {0, 0, 0}, {2, 2, 2}};
+  EXPECT_FALSE(w.check(100, 1.0, calm(box)));
+  ASSERT_TRUE(std::filesystem::exists(lg));
+  w.remove_last_good();
+  EXPECT_FALSE(std::filesystem::exists(lg));
+  EXPECT_FALSE(std::filesystem::exists(dir.file("lg.xdmf")));
+}
+
+TEST(StabilityWatch, AFailureBeforeAnyPassingCheckNamesNoFile) {
+  test::ScratchDir dir("lbdem_stability_first");
+  const std::string lg = dir.file("lg.h5");
+  StabilityParams p;
+  StabilityWatch w(p, kUnits, MPI_COMM_SELF, lg);
+  FieldBlock box{{2, 2, 2}, {0, 0, 0}, {2, 2, 2}};
+  MacroFields f = calm(box);
+  f.rho[0] = -1.0;
+  const auto failure = w.check(100, 1.0, f);
+  ASSERT_TRUE(failure);
+  EXPECT_EQ(failure->report.kind, Instability::density);
+  EXPECT_TRUE(failure->last_good_file.empty());
+  EXPECT_FALSE(std::filesystem::exists(lg));
+  EXPECT_FALSE(std::filesystem::exists(lg + ".tmp"));
+}
+
+// The state given a slab at a time is written as the whole block: every node once, in place.
+TEST(StabilityWatch, SlabsWriteTheWholeBlock) {
+  test::ScratchDir dir("lbdem_stability_slabs");
+  const std::string lg = dir.file("lg.h5");
+  StabilityParams p;
+  StabilityWatch w(p, kUnits, MPI_COMM_SELF, lg);
+  FieldBlock box{{3, 2, 5}, {0, 0, 0}, {3, 2, 5}};
+  MacroFields f = calm(box);
+  for (std::size_t c = 0; c < box.cells(); ++c) {
+    f.rho[c] = 1.0 + 1e-3 * double(c);
+    f.u[3 * c + 2] = -1e-4 * double(c);
+  }
+  MacroFields slab;
+  int calls = 0;
+  EXPECT_FALSE(w.check(100, 1.0, box, 2, [&](int z0, int z1) -> const MacroFields& {
+    ++calls;
+    slab.resize(FieldBlock{box.global, {0, 0, z0}, {box.n[0], box.n[1], z1 - z0}});
+    for (int k = z0; k < z1; ++k)
+      for (int j = 0; j < box.n[1]; ++j)
+        for (int i = 0; i < box.n[0]; ++i) {
+          const std::size_t c = box.index(i, j, k), s = slab.box.index(i, j, k - z0);
+          slab.rho[s] = f.rho[c];
+          for (int a = 0; a < 3; ++a) slab.u[3 * s + a] = f.u[3 * c + a];
+        }
+    return slab;
+  }));
+  EXPECT_EQ(calls, 3);  // planes 0-1, 2-3, 4
+  const auto rho = test::read_dataset(lg, "/volume/density");
+  const auto u = test::read_dataset(lg, "/volume/velocity");
+  ASSERT_EQ(rho.values.size(), box.cells());
+  ASSERT_EQ(u.values.size(), 3 * box.cells());
+  for (std::size_t c = 0; c < box.cells(); ++c) {
+    EXPECT_EQ(rho.values[c], double(float(si_density(f.rho[c], kUnits)))) << c;
+    EXPECT_EQ(u.values[3 * c + 2], double(float(si_velocity(f.u[3 * c + 2], kUnits)))) << c;
+  }
 }
 
 TEST(StabilityScan, SlabsMergeToTheScanOfTheWholeBlock) {

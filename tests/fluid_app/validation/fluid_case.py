@@ -184,12 +184,22 @@ def cmd_diverge(args, work):
     if not m:
         fail("no last good state file named", out, err)
     path = os.path.join(work, m.group(1))
+    # Every passing check replaced the file; the failing one must have left neither its
+    # candidate nor anything but the last passing check's state.
+    if os.path.exists(path + ".tmp"):
+        fail(f"the failing check's candidate {path}.tmp was left", out, err)
+    if not os.path.exists(os.path.splitext(path)[0] + ".xdmf"):
+        fail(f"no XDMF next to {path}", out, err)
     with h5py.File(path, "r") as h5:
         u = h5["volume/velocity"][...]
         rho = h5["volume/density"][...]
         step = int(h5.attrs["step"])
     if not (np.all(np.isfinite(u)) and np.all(rho > 0)):
         fail("the last good state is not good")
+    said = re.search(r"last good state \(step (\d+),", diag)
+    if not said or int(said.group(1)) != step or step != args.last_good_step:
+        fail(f"the file holds step {step}; expected step {args.last_good_step}, as the diagnosis"
+             " says", out, err)
     print(diag.split("\n[")[0])
     print(f"last good state {m.group(1)}: step {step}, {rho.size} nodes, finite, density > 0")
 
@@ -217,6 +227,8 @@ def main():
     d = sub.add_parser("diverge")
     d.add_argument("scene")
     d.add_argument("--expect", required=True)
+    d.add_argument("--last-good-step", type=int, required=True,
+                   help="the step of the last passing check")
     args = ap.parse_args()
     with tempfile.TemporaryDirectory(prefix="lbdem_fluid_case_") as work:
         {"validate": cmd_validate, "output": cmd_output, "diverge": cmd_diverge}[args.cmd](args, work)
