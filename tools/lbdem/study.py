@@ -144,9 +144,9 @@ class Study:
         domain = [n * self.dx for n in cells]
         s = self.base_scene(f"single_{shape}", domain, float(sc["end"]))
         # The validation case's boundaries (sphere_terminal_d12_tau055.yaml): pressure (0 Pa) on
-        # the side faces, walls at the ends. Periodic sides would make it a periodic array of
-        # solid fraction pi / (6 x 5 x 5 x 24), whose images slow the body by about 5 %
-        # (docs/validation.md, "Side boundaries"), raising every u/u_T by as much.
+        # the side faces, walls at the ends. With periodic sides the body's images 5 d apart
+        # would slow it by about 5 % (docs/validation.md, "Side boundaries"), raising every
+        # u/u_T by as much.
         s["fluid"]["boundaries"] = {"x_min": "pressure", "x_max": "pressure", "y_min": "pressure",
                                     "y_max": "pressure", "z_min": "wall", "z_max": "wall"}
         s["dem"].update({"periodic": "", "walls": [{"axis": "z", "side": "lo"},
