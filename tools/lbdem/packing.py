@@ -454,9 +454,9 @@ def relax_step(phi):
 def relax(p, sweeps, seed, step=0.5, angle=0.5, log=print):
     """Randomises packing p in place at its own solid fraction: `sweeps` sweeps of joint moves
     (a displacement of up to `step` d per axis and a rotation of up to `angle` rad), accepted
-    only when neither spheres nor cubes overlap. A packing scaled down from phi 0.4 keeps the
-    neighbour shells of the denser packing (g(r) peaks near 1.36 d x its scale factor); these
-    moves draw it from the hard-body fluid at the target phi instead (the Metropolis chain's
+    only when neither spheres nor cubes overlap. A packing scaled down from phi 0.4 is the
+    denser packing magnified (no two centres closer than (0.4 / phi)^(1/3) d); these moves
+    draw it from the hard-body fluid at the target phi instead (the Metropolis chain's
     stationary distribution: every overlap-free configuration equally likely). Returns the
     acceptance ratio and the rms displacement (unwrapped) in d."""
     rng = np.random.default_rng(seed)
