@@ -2,11 +2,11 @@
 """Writes the study's initial packings (docs/study.md, "Packing"): N bodies on a simple cubic
 lattice at phi = 0.4, randomised by hard-body Monte Carlo (spheres of diameter d and
 volume-equivalent cubes at once, moved many at a time on a checkerboard of cells), scaled to
-each solid fraction; one bodies file per phi for the scene key
-`bodies: [{file: ..., shape: ..., density: ...}]`.
+each solid fraction and, with --relax, randomised there again; one bodies file per phi for the
+scene key `bodies: [{file: ..., shape: ..., density: ...}]`.
 
     /usr/bin/python3 tools/make_packing.py --bodies 27 --diameter 3.5e-4 --phi 0.1 0.3 \\
-        --sweeps 1000 --seed 1 --out runs/packing
+        --sweeps 1000 --seed 1 --relax 1000 --out runs/packing
 
 Prints the time of each stage of the Monte Carlo and in all; the contact value g(d+) of the
 hard-sphere stage beside the Carnahan-Starling value at phi 0.4 and of the final packing; per
@@ -78,6 +78,9 @@ def main():
                    help="bodies file format (docs/study.md, 'Bodies from a file')")
     p.add_argument("--spheres-only", action="store_true",
                    help="hard-sphere stage only (cubes not placed, orientations aligned)")
+    p.add_argument("--relax", type=int, default=0, metavar="SWEEPS",
+                   help="relax each scaled packing at its phi by SWEEPS sweeps of joint moves "
+                        "(packing.relax; what tools/study.py does, 'packing.relax_sweeps')")
     p.add_argument("--vs", metavar="REV", help="also time the generator of git revision REV")
     p.add_argument("--vs-limit", type=float, default=600.0, metavar="S",
                    help="stop the generator of --vs after S seconds (default 600)")
@@ -92,8 +95,11 @@ def main():
           f"made in {made:.1f} s ({cpu:.1f} s of CPU)")
     for phi in [packing.PHI_START] + args.phi:
         s = base.scaled(phi)
+        relaxed = args.relax if args.relax and phi < packing.PHI_START else None
+        if relaxed:
+            packing.relax(s, relaxed, args.seed, packing.relax_step(phi))
         path = os.path.join(args.out, f"packing_phi{phi:.3f}.{args.format}")
-        s.save(path, packing.PHI_START, cubes)
+        s.save(path, packing.PHI_START, cubes, relaxed)
         t1 = time.monotonic()
         spheres, cube_pairs = s.overlaps()
         checked = time.monotonic() - t1

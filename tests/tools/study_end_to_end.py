@@ -35,7 +35,7 @@ def main():
               f"warnings in the log: {first.stdout.count('WARNING')}; 'None': "
               f"{first.stdout.count('None')}")
         ok = ok and change < 1e-3 and "WARNING" not in first.stdout and "None" not in first.stdout
-        for png in ("settling.png", "rdf.png", "correlation.png", "vacf.png"):
+        for png in ("settling.png", "rdf.png", "correlation.png", "vacf.png", "relaxation.png"):
             ok = ok and os.path.getsize(os.path.join(out, png)) > 0
         second = subprocess.run(cmd, capture_output=True, text=True)
         skipped = second.stdout.count("skipped")

@@ -189,6 +189,24 @@ def radial_distribution(positions, box, r_max=None, bins=50):
     return 0.5 * (edges[1:] + edges[:-1]), counts / (len(positions) * ideal)
 
 
+def near_pair_series(positions, box, r_near):
+    """Per snapshot, the mean of g(r) over r < r_near: pairs closer than r_near over the
+    ideal-gas count N (N - 1) / 2 * (4/3 pi r_near^3) / V (minimum image, r_near <= L_min / 2).
+    A scalar of the near structure whose steady start (mser_start) says when g(r) has stopped
+    changing. Returns an array (T,)."""
+    positions = np.asarray(positions, float)
+    if positions.ndim == 2:
+        positions = positions[None]
+    box = np.asarray(box, float)
+    n = positions.shape[1]
+    ideal = 0.5 * n * (n - 1) * 4.0 / 3.0 * np.pi * r_near**3 / np.prod(box)
+    out = np.empty(len(positions))
+    for t, x in enumerate(positions):
+        d = geometry.pair_separations(x, box)[2]
+        out[t] = np.count_nonzero(np.einsum("pi,pi->p", d, d) < r_near * r_near) / ideal
+    return out
+
+
 def velocity_correlation(positions, vz, box, r_max=None, bins=20):
     """C(r) = <dv_z(0) dv_z(r)> / <dv_z^2> over pairs at distance r (the paper), dv_z = v_z minus
     the mean over bodies at that time, up to L/2 (minimum image). Returns (bin centres, C);

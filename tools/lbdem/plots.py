@@ -25,6 +25,10 @@ def settling_plot(rows, reynolds, path, fits=None):
     k_yk, n_yk = references.yin_koch_fit(reynolds)
     ax.plot(phi, references.yin_koch(phi, reynolds), "k-.",
             label=f"Yin & Koch 2007 fit, Re = {reynolds:g} (k = {k_yk:.2f}, n = {n_yk:.2f})")
+    # Their two fits that bracket the study's Reynolds number, as they published them.
+    for re_t, k, n in references.yin_koch_bracket(reynolds):
+        ax.plot(phi, k * (1 - phi) ** n, "-.", color="grey", lw=0.7,
+                label=f"Yin & Koch 2007 fit at their Re_t = {re_t:g} (k = {k:.2f}, n = {n:.1f})")
     for shape in ("sphere", "cube"):
         sel = [r for r in rows if r["shape"] == shape]
         if not sel:
@@ -67,9 +71,33 @@ def per_shape_plot(rows, curves, path, x_key, y_key, xlabel, ylabel, scale, mark
     plt.close(fig)
 
 
-def study_plots(rows, curves, out, reynolds, d, a, fits=None):
+def relaxation_plot(rows, curves, d, near_pairs, path):
+    """Per run, the settling speed u/u_T and the mean g(r) below near_pairs d against t u_T / d,
+    with the steady start (the later of the two MSER starts) marked: how long a run must be."""
+    shapes = [s for s in ("sphere", "cube") if any(r["shape"] == s for r in rows)]
+    fig, axes = plt.subplots(2, len(shapes), figsize=(5 * len(shapes), 6), squeeze=False)
+    for col, shape in enumerate(shapes):
+        for r in (r for r in rows if r["shape"] == shape):
+            cv = curves[(shape, r["phi_nominal"])]
+            t = cv["time"] * r["u_T"] / d
+            line, = axes[0, col].plot(t, cv["speed"] / r["u_T"], lw=0.8,
+                                      label=f"phi = {r['phi']:.3f}")
+            axes[1, col].plot(t, cv["near"], lw=0.8, color=line.get_color())
+            for ax in axes[:, col]:
+                ax.axvline(r["t_steady"] * r["u_T"] / d, color=line.get_color(), ls="--", lw=0.8)
+        axes[0, col].set_title(shape + "s", fontsize=9)
+        axes[0, col].set_ylabel(r"$u / u_T$")
+        axes[1, col].set_ylabel(rf"mean $g(r)$, $r < {near_pairs:g}\,d$")
+        axes[1, col].set_xlabel(r"$t\,u_T / d$")
+        axes[0, col].legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
+
+
+def study_plots(rows, curves, out, reynolds, d, a, fits=None, near_pairs=1.5):
     paths = [os.path.join(out, n) for n in ("settling.png", "rdf.png", "correlation.png",
-                                            "vacf.png")]
+                                            "vacf.png", "relaxation.png")]
     settling_plot(rows, reynolds, paths[0], fits)
     per_shape_plot(rows, curves, paths[1], "r", "g", r"$r / d$", r"$g(r)$", lambda r: d,
                    marks={"cube": a / d})
@@ -77,6 +105,7 @@ def study_plots(rows, curves, out, reynolds, d, a, fits=None):
                    lambda r: r["box_cells"] * d / r["cells_per_diameter"])
     per_shape_plot(rows, curves, paths[3], "lag", "vacf", r"$t\,u_T / d$",
                    r"VACF of $v_{xy}$", lambda r: d / r["u_T"])
+    relaxation_plot(rows, curves, d, near_pairs, paths[4])
     return paths
 
 

@@ -96,6 +96,14 @@ def yin_koch_fit(re):
     return _YIN_KOCH[-1][1], _YIN_KOCH[-1][2]
 
 
+def yin_koch_bracket(re):
+    """Yin & Koch's published (Re_t, k, n) next to Re on either side (one row at or beyond an
+    end of their range)."""
+    below = [row for row in _YIN_KOCH if row[0] <= re]
+    above = [row for row in _YIN_KOCH if row[0] >= re]
+    return list(dict.fromkeys(([below[-1]] if below else []) + ([above[0]] if above else [])))
+
+
 def yin_koch(phi, re):
     """U / U_t = k (1 - phi)^n with Yin & Koch's (k, n) at Re_t (yin_koch_fit)."""
     k, n = yin_koch_fit(re)

@@ -21,6 +21,9 @@ RUN_FILES = ("scene.yaml", "bodies.csv")
 # that the study accepts: the audit holds it to ~1e-12 in double and ~3e-5 in float precision
 # (docs/method-loads.md section 7, docs/precision.md); a lost force shows at the per cent level.
 MOMENTUM_TOLERANCE = 1e-3
+# Radius, in d, below which the mean of g(r) tracks the near structure (analysis.near_pair_series):
+# the first shell of g(r), which at phi 0.1-0.3 lies between d and about 1.4 d.
+NEAR_PAIRS = 1.5
 # The fluid's number type (the scene's fluid.precision): float halves the populations' memory
 # traffic; what it changes in the validation cases and the study is in docs/precision.md.
 PRECISIONS = ("double", "float")
@@ -85,6 +88,7 @@ class Study:
         self.dt = (self.tau - 0.5) / 3.0 * self.dx**2 / self.nu
         self.clump = os.path.normpath(os.path.join(base, config["cube_clump"]))
         self.finished = []  # (steps, cells, bodies, wall s) of the runs of this call
+        self.relaxed_packings = {}  # phi -> packing relaxed there (self.relaxed)
         self.lattice_rate, self.body_cost = 9.0e6, 2.2e-4  # measured here (docs/study.md, "Cost")
         self.ranks = int(config.get("run", {}).get("ranks", [1, 1])[0])
 
@@ -139,10 +143,14 @@ class Study:
         cells = [int(round(k * self.d / self.dx)) for k in sc["box"]]
         domain = [n * self.dx for n in cells]
         s = self.base_scene(f"single_{shape}", domain, float(sc["end"]))
-        s["fluid"]["boundaries"] = {"x_min": "periodic", "x_max": "periodic", "y_min": "periodic",
-                                    "y_max": "periodic", "z_min": "wall", "z_max": "wall"}
-        s["dem"].update({"periodic": "xy", "walls": [{"axis": "z", "side": "lo"},
-                                                     {"axis": "z", "side": "hi"}]})
+        # The validation case's boundaries (sphere_terminal_d12_tau055.yaml): pressure (0 Pa) on
+        # the side faces, walls at the ends. With periodic sides the body's images 5 d apart
+        # would slow it by about 5 % (docs/validation.md, "Side boundaries"), raising every
+        # u/u_T by as much.
+        s["fluid"]["boundaries"] = {"x_min": "pressure", "x_max": "pressure", "y_min": "pressure",
+                                    "y_max": "pressure", "z_min": "wall", "z_max": "wall"}
+        s["dem"].update({"periodic": "", "walls": [{"axis": "z", "side": "lo"},
+                                                   {"axis": "z", "side": "hi"}]})
         s["shapes"] = [self.shape_entry(shape)]
         z = domain[2] - float(sc["release_below_top"]) * self.d
         s["bodies"] = [{"shape": shape, "position": [domain[0] / 2, domain[1] / 2, z],
@@ -157,12 +165,30 @@ class Study:
         while n * self.dx < base_packing.box:
             n += 1
         box = n * self.dx
-        p = base_packing.scaled(base_packing.n * math.pi / 6 * self.d**3 / box**3)
+        p = self.relaxed(base_packing, base_packing.n * math.pi / 6 * self.d**3 / box**3)
         s = self.base_scene(f"{shape}_phi{phi:.3f}", [box] * 3, float(self.c["run"]["end"]))
         s["dem"]["periodic"] = "xyz"
         s["shapes"] = [self.shape_entry(shape)]
         s["bodies"] = [{"file": "bodies.csv", "shape": shape, "density": self.rho_p}]
         return s, [n] * 3, p
+
+    def relaxed(self, base_packing, phi):
+        """The packing scaled to phi and relaxed there (packing.relax, `packing.relax_sweeps`
+        sweeps, default 1000; 0 keeps the scaled packing); made once per phi and call."""
+        key = round(phi, 12)
+        if key not in self.relaxed_packings:
+            p = base_packing.scaled(phi)
+            sweeps = int(self.c["packing"].get("relax_sweeps", 1000))
+            if sweeps > 0:
+                packing.relax(p, sweeps, int(self.c["packing"]["seed"]),
+                              packing.relax_step(phi), log=self.log)
+                spheres, cubes = p.overlaps()
+                if spheres or cubes:
+                    raise RuntimeError(f"packing at phi {phi:.4g}: {spheres} sphere and {cubes} "
+                                       "cube overlaps after relaxing")
+            p.relax_sweeps = sweeps
+            self.relaxed_packings[key] = p
+        return self.relaxed_packings[key]
 
     # ---- runs ---------------------------------------------------------------------------------
     def packing(self):
@@ -208,7 +234,8 @@ class Study:
             shutil.rmtree(folder)
         os.makedirs(folder)
         if bodies is not None:
-            bodies.save(os.path.join(folder, "bodies.csv"), packing.PHI_START)
+            bodies.save(os.path.join(folder, "bodies.csv"), packing.PHI_START,
+                        relaxed=getattr(bodies, "relax_sweeps", None))
         path = os.path.join(folder, "scene.yaml")
         with open(path, "w") as f:
             f.write(text)
@@ -248,7 +275,12 @@ class Study:
         phi_m = n * math.pi / 6 * self.d**3 / np.prod(box)
         j = np.interp(tr.time, series["time_s"], series["mean_uz_m_s"])
         speed = -analysis.settling_velocity(tr["vz"].mean(axis=1), j)
-        start = analysis.mser_start(speed)
+        # Steady once both the settling speed and the near structure (the mean of g(r) below
+        # NEAR_PAIRS d, analysis.near_pair_series) have stopped drifting: MSER on each, the later.
+        near = analysis.near_pair_series(tr.vectors(""), box,
+                                         min(NEAR_PAIRS * self.d, 0.5 * box.min()))
+        start_speed, start_structure = analysis.mser_start(speed), analysis.mser_start(near)
+        start = max(start_speed, start_structure)
         mean, err = analysis.block_average(speed[start:])
         # The settling balance holds the momentum of fluid + bodies, not the volume flux j (with
         # rho_p != rho_f, j = phi <u_p> (1 - rho_p / rho_f) in the zero-momentum frame); j is the
@@ -266,15 +298,23 @@ class Study:
                "tau": self.tau, "u_T": u_t, "settling_velocity": mean, "error": err,
                "u_over_uT": mean / u_t, "u_over_uT_error": err / u_t,
                "richardson_zaki": references.richardson_zaki(phi_m, self.c["reynolds"]),
+               "yin_koch": references.yin_koch(phi_m, self.c["reynolds"]),
                # Batchelor's dilute limit only where it is meant to hold.
                "batchelor": references.batchelor(phi_m) if phi_m <= 0.1 else None,
                "t_steady": float(tr.time[start]),
-               "t_end": float(tr.time[-1]), "volume_flux_end": float(j[-1]),
+               "t_end": float(tr.time[-1]),
+               # The same times in d / u_T, the single body's time to fall its own diameter.
+               "t_steady_speed_d_uT": float(tr.time[start_speed] * u_t / self.d),
+               "t_steady_structure_d_uT": float(tr.time[start_structure] * u_t / self.d),
+               "t_end_d_uT": float(tr.time[-1] * u_t / self.d),
+               "near_pairs_start": float(near[:5].mean()),
+               "near_pairs_steady": float(near[start:].mean()),
+               "volume_flux_end": float(j[-1]),
                "volume_flux_drift": j_slope,
                "momentum_change": momentum_change(io.momentum_path(scene_path, scene)),
                "snapshots_analysed": int(len(x)),
                "wall_s": result["wall_s"]}
-        curves = {"time": tr.time, "speed": speed, "r": r, "g": g, "rc": rc, "C": c,
+        curves = {"time": tr.time, "speed": speed, "near": near, "r": r, "g": g, "rc": rc, "C": c,
                   "lag": dt_out * np.arange(len(vacf)), "vacf": vacf}
         if shape == "cube":
             q = tr.quaternions()[steady]
@@ -339,7 +379,7 @@ class Study:
         fits = self.fit_hindered_settling(rows)
         from . import plots
         for png in plots.study_plots(rows, curves, self.out, self.c["reynolds"], self.d, self.a,
-                                     fits):
+                                     fits, NEAR_PAIRS):
             self.log(f"study: plot {png}")
         return rows
 

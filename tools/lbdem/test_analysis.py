@@ -76,6 +76,9 @@ class HinderedSettlingFit(unittest.TestCase):
         self.assertTrue(0.86 < k < 0.88 and 3.6 < n < 3.8)
         self.assertEqual(references.yin_koch_fit(100.0), (0.88, 3.6))  # clamped
         self.assertAlmostEqual(references.yin_koch(0.3, 20.0), 0.88 * 0.7**3.6)
+        self.assertEqual(references.yin_koch_bracket(16.8), [(9.98, 0.86, 3.8), (20.0, 0.88, 3.6)])
+        self.assertEqual(references.yin_koch_bracket(20.0), [(20.0, 0.88, 3.6)])
+        self.assertEqual(references.yin_koch_bracket(0.5), [(1.02, 0.92, 4.2)])
 
 
 class Structure(unittest.TestCase):
@@ -98,6 +101,33 @@ class Structure(unittest.TestCase):
         w = 0.5 / 48
         shell = 4 / 3 * np.pi * ((r[first] + w / 2) ** 3 - (r[first] - w / 2) ** 3)
         self.assertAlmostEqual(g[first], 6 * 0.5 * n**3 / (0.5 * n**3 * (n**3 - 1) * shell), 6)
+
+    def test_near_pairs_of_an_ideal_gas_and_of_a_lattice(self):
+        # Random points: the mean g below r_near is 1 within its counting noise. A simple cubic
+        # lattice of spacing 1/4 has no pair closer than the spacing and 6 neighbours at it.
+        rng = np.random.default_rng(3)
+        x = rng.random((200, 64, 3))
+        series = analysis.near_pair_series(x, self.box, 0.3)
+        self.assertEqual(series.shape, (200,))
+        self.assertAlmostEqual(series.mean(), 1.0, delta=0.05)
+        g = (np.arange(4) + 0.5) / 4
+        lattice = np.stack(np.meshgrid(g, g, g, indexing="ij"), -1).reshape(-1, 3)
+        self.assertEqual(analysis.near_pair_series(lattice, self.box, 0.24)[0], 0.0)
+        ideal = 0.5 * 64 * 63 * 4 / 3 * np.pi * 0.26**3
+        self.assertAlmostEqual(analysis.near_pair_series(lattice, self.box, 0.26)[0],
+                               64 * 6 / 2 / ideal, places=12)
+
+    def test_near_pairs_find_when_the_structure_settles(self):
+        # Bodies drawn at random (g = 1) that pair up from snapshot 120 on: the steady start of
+        # the series (MSER) lies at the change, not before it.
+        rng = np.random.default_rng(4)
+        x = rng.random((300, 64, 3))
+        x[120:, 32:] = x[120:, :32] + 0.05
+        series = analysis.near_pair_series(x, self.box, 0.1)
+        start = analysis.mser_start(series)
+        self.assertGreaterEqual(start, 120)
+        self.assertLess(start, 130)
+        self.assertGreater(series[120:].mean(), 3 * series[:120].mean())
 
     def test_velocity_correlation_of_a_plane_wave(self):
         # v_z = cos(k x) at uniformly random points: <cos(k x_i) cos(k x_j)> over pairs at

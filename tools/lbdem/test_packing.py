@@ -125,6 +125,29 @@ class Packing(unittest.TestCase):
         with self.assertRaises(ValueError):
             self.p.scaled(0.45)
 
+    def test_relaxed_at_the_target_phi(self):
+        # Scaled from phi 0.4 to 0.2 every pair is at least (0.4 / 0.2)^(1/3) d = 1.26 d apart;
+        # relaxed at 0.2 the pairs between d and 1.2 d of the hard-body fluid there come back,
+        # each body has moved beyond its neighbour spacing, and nothing overlaps.
+        s = self.p.scaled(0.2)
+        box = np.full(3, s.box)
+
+        def closest(x):
+            return np.linalg.norm(geometry.pair_separations(x, box)[2], axis=-1).min() / s.d
+
+        self.assertGreater(closest(s.x), 1.25)
+        self.assertAlmostEqual(packing.relax_step(0.2), (math.pi / 1.2) ** (1 / 3) - 1)
+        self.assertEqual(packing.relax_step(0.01), 0.5)
+        self.assertEqual(packing.relax_step(0.5), 0.1)
+        acceptance, rms = packing.relax(s, 300, 5, packing.relax_step(0.2), log=lambda _: None)
+        self.assertAlmostEqual(s.phi(), 0.2, places=12)
+        self.assertEqual(s.overlaps(), (0, 0))
+        self.assertGreater(acceptance, 0.1)
+        self.assertGreater(rms, 1.5)
+        r = np.linalg.norm(geometry.pair_separations(s.x, box)[2], axis=-1) / s.d
+        self.assertGreaterEqual(r.min(), 1.0)
+        self.assertGreater(np.count_nonzero(r < 1.2), 0)
+
     def test_radial_distribution(self):
         # No pair closer than d; beyond contact a hard-sphere fluid at phi 0.4 (contact value
         # ~2.4 by Carnahan-Starling), not lattice spikes: g stays below 4 and
