@@ -44,8 +44,7 @@ namespace lbdem {
 // What the kernel computes besides plain BGK (a compile-time choice: a fluid-only scene
 // without force runs the plain variant and reads nothing else).
 // `porous_one_body` is the kernel's own row variant for rows whose porous cells all belong to
-// one body (the common case): the same cell arithmetic as `porous` (the body's parameters
-// gathered per cell), one exchange sum per term for the row.
+// one body (the common case): the body's parameters are broadcast instead of gathered.
 enum class Forcing { none, uniform, porous, porous_one_body };
 
 // Values per body in KernelArgs::exchange: impulse, moment, covered momentum, covered moment.
@@ -76,6 +75,7 @@ struct KernelArgs {
   const float* d = nullptr;
   const std::int32_t* body = nullptr;
   std::array<const T*, 9> table{};
+  std::array<T, 9> row_body{};     // porous_one_body: the row's body, same layout as `table`
   std::int32_t row_id = 0;         // porous_one_body: the row's body index + 1
   std::array<T, 3> period{};       // global lattice length on periodic axes
   std::array<T, 3> half_period{};  // period / 2; +infinity on non-periodic axes
@@ -110,6 +110,17 @@ template <class T>
   return s;
 }
 
+// a b + c rounded once where the target has a fused multiply-add; elsewhere a b + c, which
+// the compiler then cannot contract either (std::fma would be a slow library call there).
+template <class T>
+[[gnu::always_inline]] inline T fused_mul_add(T a, T b, T c) {
+#ifdef __FMA__
+  return std::fma(a, b, c);
+#else
+  return a * b + c;
+#endif
+}
+
 // Always inlined: the cell loop vectorizes only with the cell's body in it.
 template <class T, Forcing Mode, bool Sum>
 [[gnu::always_inline]] inline void collide_cell(const KernelArgs<T>& a, int at, int y, int z,
@@ -133,17 +144,17 @@ template <class T, Forcing Mode, bool Sum>
     uy += a.force[1] * inv_rho;
     uz += a.force[2] * inv_rho;
   }
-  if constexpr (Mode == Forcing::porous) {
+  if constexpr (Mode == Forcing::porous || Mode == Forcing::porous_one_body) {
     const T dd = a.row_d[at];
-    // Gathered per cell on every porous row, one body or several: a cell then rounds the same
-    // whichever bodies share its row on the rank, so for any decomposition. (Copying one
-    // body's parameters once per row lets the compiler compute their products with the
-    // row-constant y and z once, unfused, and a covered cell's last bit then depends on the
-    // rows' split in x: docs/performance.md, "The porous kernel".)
-    const SlotInt<T> id = a.row_slot[at];
     T bt[9];
+    if constexpr (Mode == Forcing::porous) {
+      const SlotInt<T> id = a.row_slot[at];
 #pragma GCC unroll 9
-    for (int m = 0; m < 9; ++m) bt[m] = a.table[m][id];
+      for (int m = 0; m < 9; ++m) bt[m] = a.table[m][id];
+    } else {
+#pragma GCC unroll 9
+      for (int m = 0; m < 9; ++m) bt[m] = a.row_body[m];
+    }
     // Node position in global lattice coordinates (node g at g + 1/2), minimum image.
     T r[3] = {a.row_x[at] - bt[0], T(a.box.offset[1] + y - 1) + T(0.5) - bt[1],
               T(a.box.offset[2] + z - 1) + T(0.5) - bt[2]};
@@ -154,9 +165,14 @@ template <class T, Forcing Mode, bool Sum>
       r[k] -= r[k] > a.half_period[k] ? a.period[k] : T(0);
       r[k] += r[k] < -a.half_period[k] ? a.period[k] : T(0);
     }
-    const T upx = bt[3] + bt[7] * r[2] - bt[8] * r[1];
-    const T upy = bt[4] + bt[8] * r[0] - bt[6] * r[2];
-    const T upz = bt[5] + bt[6] * r[1] - bt[7] * r[0];
+    // u_p = U + Omega x r with each product fused explicitly, in the order the compiler
+    // contracts the plain expression on the gather: on the broadcast, where Omega, r_y and r_z
+    // are row constants, it would otherwise round some products on their own before the loop
+    // (hoisted, unfused), and a covered cell's last bit would depend on which variant its row
+    // takes, hence on the rows' split in x.
+    const T upx = fused_mul_add(-bt[8], r[1], fused_mul_add(bt[7], r[2], bt[3]));
+    const T upy = fused_mul_add(-bt[6], r[2], fused_mul_add(bt[8], r[0], bt[4]));
+    const T upz = fused_mul_add(-bt[7], r[0], fused_mul_add(bt[6], r[1], bt[5]));
     const T pen = T(1) - dd;
     ux += pen * (upx - vx);
     uy += pen * (upy - vy);
@@ -255,8 +271,6 @@ inline void collide_row(const KernelArgs<T>& a, int x0, int len, int y, int z, F
     }
   }
   constexpr bool porous = Mode == Forcing::porous || Mode == Forcing::porous_one_body;
-  // The cell arithmetic of both porous row variants is the same (see collide_cell).
-  constexpr Forcing cell_mode = porous ? Forcing::porous : Mode;
   std::int64_t m0 = 0, m1 = 0, m2 = 0, mass = 0;
   T* const ex_row = a.scratch;
   const int ex_stride = a.row_len;
@@ -267,7 +281,7 @@ inline void collide_row(const KernelArgs<T>& a, int x0, int len, int y, int z, F
     for (int i = 0; i < Q; ++i) fin[i] = src[i][k];
     FlowSums cs{};
     T ex[kPenaltyTerms];
-    collide_cell<T, cell_mode, Sum>(a, k, y, z, fin, fout, cs, ex);
+    collide_cell<T, Mode, Sum>(a, k, y, z, fin, fout, cs, ex);
     if constexpr (porous) {
 #pragma GCC unroll 12
       for (int m = 0; m < kPenaltyTerms; ++m) ex_row[m * ex_stride + k] = ex[m];
@@ -375,6 +389,7 @@ void collide_stream(const KernelArgs<T>& args, const CellRange& r, FlowSums& sum
           a.row_slot[k] = body[k] + 1;
         }
         if (lo == hi) {
+          for (int m = 0; m < 9; ++m) a.row_body[m] = a.table[m][lo + 1];
           a.row_id = lo + 1;
           detail::collide_row<T, Odd, Forcing::porous_one_body, Sum>(a, r.lo[0], len, y, z, s);
           continue;
