@@ -110,6 +110,17 @@ template <class T>
   return s;
 }
 
+// a b + c rounded once where the target has a fused multiply-add; elsewhere a b + c, which
+// the compiler then cannot contract either (std::fma would be a slow library call there).
+template <class T>
+[[gnu::always_inline]] inline T fused_mul_add(T a, T b, T c) {
+#ifdef __FMA__
+  return std::fma(a, b, c);
+#else
+  return a * b + c;
+#endif
+}
+
 // Always inlined: the cell loop vectorizes only with the cell's body in it.
 template <class T, Forcing Mode, bool Sum>
 [[gnu::always_inline]] inline void collide_cell(const KernelArgs<T>& a, int at, int y, int z,
@@ -154,9 +165,14 @@ template <class T, Forcing Mode, bool Sum>
       r[k] -= r[k] > a.half_period[k] ? a.period[k] : T(0);
       r[k] += r[k] < -a.half_period[k] ? a.period[k] : T(0);
     }
-    const T upx = bt[3] + bt[7] * r[2] - bt[8] * r[1];
-    const T upy = bt[4] + bt[8] * r[0] - bt[6] * r[2];
-    const T upz = bt[5] + bt[6] * r[1] - bt[7] * r[0];
+    // u_p = U + Omega x r with each product fused explicitly, in the order the compiler
+    // contracts the plain expression on the gather: on the broadcast, where Omega, r_y and r_z
+    // are row constants, it would otherwise round some products on their own before the loop
+    // (hoisted, unfused), and a covered cell's last bit would depend on which variant its row
+    // takes, hence on the rows' split in x.
+    const T upx = fused_mul_add(-bt[8], r[1], fused_mul_add(bt[7], r[2], bt[3]));
+    const T upy = fused_mul_add(-bt[6], r[2], fused_mul_add(bt[8], r[0], bt[4]));
+    const T upz = fused_mul_add(-bt[7], r[0], fused_mul_add(bt[6], r[1], bt[5]));
     const T pen = T(1) - dd;
     ux += pen * (upx - vx);
     uy += pen * (upy - vy);
