@@ -28,7 +28,7 @@ import sys
 from concurrent.futures import ThreadPoolExecutor
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from lbdem import references  # noqa: E402
+from lbdem import io, references  # noqa: E402
 
 SUMMARY = re.compile(r"K over 16 poses: mean ([0-9.]+)(?: \(reference [0-9.]+, ([-+0-9.]+) %)?"
                      r".*\(max - min\) / mean ([0-9.]+) %.*, ([0-9.]+) s")
@@ -121,12 +121,7 @@ def main():
                   f"K {r['K']:.4f} ({r['error_pct'] if r['error_pct'] != '' else '-'} %), "
                   f"spread {r['spread_pct']:.2f} %, offset {r['offset_cells']}, "
                   f"band excess {r['band_excess_cells']}, {r['wall_s']:.0f} s", flush=True)
-    os.makedirs(os.path.dirname(os.path.abspath(args.csv)), exist_ok=True)
-    with open(args.csv, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0]))
-        w.writeheader()
-        w.writerows(rows)
-    print(f"wrote {args.csv}")
+    io.write_rows(args.csv, rows)
     return 0
 
 

@@ -17,7 +17,6 @@ near zero at every tau (--max-excess makes that a check: exit 1 if any |a_h - a|
 in cells). Prints one row per case (K, a_h - a, wall time) and writes a CSV.
 """
 import argparse
-import csv
 import math
 import os
 import sys
@@ -129,12 +128,7 @@ def main():
                           f"K {r['K']:.4f} (S&A {r['K_SA']:.4f}, {100 * (r['K'] / r['K_SA'] - 1):+.2f} %)"
                           f"  a_h - a = {r['excess_cells']:+.3f} cells  Re {r['Re']:.3g}  "
                           f"{r['wall_s']:.0f} s", flush=True)
-    os.makedirs(os.path.dirname(os.path.abspath(args.csv)), exist_ok=True)
-    with open(args.csv, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0]))
-        w.writeheader()
-        w.writerows(rows)
-    print(f"wrote {args.csv}")
+    io.write_rows(args.csv, rows)
     if args.max_excess is not None:
         worst = max(abs(r["excess_cells"]) for r in rows)
         wall = sum(r["wall_s"] for r in rows)

@@ -79,6 +79,17 @@ def read_rows(path):
         return [{k: float(v) for k, v in row.items()} for row in csv.DictReader(f)]
 
 
+def write_rows(path, rows):
+    """Writes a list of dicts (one per row, the first row's keys as header) to a CSV, creating
+    its folder, and says where."""
+    os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
+    with open(path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+    print(f"wrote {path}")
+
+
 def read_trace_by_body(path):
     """{body id: list of rows (dicts of floats)} in time order."""
     bodies = {}
