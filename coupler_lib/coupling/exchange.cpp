@@ -35,7 +35,12 @@ PacketSender::~PacketSender() {
     for (MPI_Request& r : sent_) MPI_Request_free(&r);
     return;
   }
-  for (MPI_Request& r : sent_) wait_request(r, WaitMode::backoff);
+  // Every packet of a run that ends normally has been received by then (each side's last
+  // receive follows the other's last send); the deadline only keeps a vanished peer from
+  // holding this process forever.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  for (MPI_Request& r : sent_)
+    if (!wait_request_until(r, deadline)) MPI_Request_free(&r);
 }
 
 void PacketSender::complete(const ExchangeWait& wait) {
