@@ -2,7 +2,7 @@
 """coupled_bench: throughput of coupled runs against the fluid alone on the same lattice.
 
     /usr/bin/python3 tools/coupled_bench.py --build build [--quick] [--np-fluid 1 --np-dem 1]
-                                            [--only cubes64_c100,fluid58]
+                                            [--only cubes64_c100,fluid58] [--repeat N]
 
 Runs the scenes of configs/bench/ through mpirun exactly as a user would
 (mpirun -np A fluid_app s.yaml : -np B dem_app s.yaml; fluid-only scenes with fluid_app
@@ -18,11 +18,15 @@ first progress line to its last (the first progress interval is the warm-up: cac
 embedding, LAMMPS set-up run); with fewer than two progress lines it falls back to the cells
 over the sum of the fluid rank's per-step parts. The split is averaged over all steps of the
 run. --quick runs the two small quick_* scenes for a smoke test (ctest checks that every
-figure is printed, never a time).
+figure is printed, never a time). --repeat N runs the whole plan N times in turn (each coupled
+scene right after its fluid-only reference, so each ratio compares runs minutes apart) and ends
+with each coupled scene's median, smallest and largest ratio: on a shared machine one run's
+ratio scatters by several per cent.
 """
 import argparse
 import json
 import os
+import statistics
 import subprocess
 import sys
 import time
@@ -98,6 +102,7 @@ def main():
     ap.add_argument("--np-fluid", type=int, default=1)
     ap.add_argument("--np-dem", type=int, default=1)
     ap.add_argument("--only", default="", help="comma-separated scene names")
+    ap.add_argument("--repeat", type=int, default=1, help="runs of the whole plan, in turn")
     args = ap.parse_args()
     args.build = os.path.abspath(args.build)
     plan = QUICK if args.quick else FULL
@@ -115,19 +120,34 @@ def main():
           f"{'bodies':>8} {'exch':>6} {'idle':>6} | {'DEM':>8} {'sub':>4} {'exch':>6} "
           f"{'idle':>6} {'sph-steps/s':>11}")
     fluid_only = {}
-    for name, ref in plan:
-        r = run_scene(args, name)
-        if not r["coupled"]:
-            fluid_only[name] = r["mlups"]
-            print(f"  {name:<26} {r['cells']:>9} {r['mlups']:>7.2f} {'1':>7} |", flush=True)
-            continue
-        ratio = f"{100 * r['mlups'] / fluid_only[ref]:.1f}%" if ref in fluid_only else "-"
-        ms = lambda k: f"{1e3 * r[k]:.2f}"  # noqa: E731
-        rate = r["spheres"] * r["substeps"] / r["dem"] if r["dem"] > 0 else 0.0
-        print(f"  {name:<26} {r['cells']:>9} {r['mlups']:>7.2f} {ratio:>7} | {ms('lattice'):>8} "
-              f"{ms('bodies'):>8} {ms('f_exchange'):>6} {ms('f_idle'):>6} | {ms('dem'):>8} "
-              f"{r['substeps']:>4} {ms('d_exchange'):>6} {ms('d_idle'):>6} {rate:>11.3g}",
-              flush=True)
+    ratios = {}
+    for _ in range(max(args.repeat, 1)):
+        for name, ref in plan:
+            run_and_print(args, name, ref, fluid_only, ratios)
+    if args.repeat > 1:
+        for name, rs in ratios.items():
+            print(f"# {name}: / fluid-only over {len(rs)} runs: median "
+                  f"{100 * statistics.median(rs):.1f}%, smallest {100 * min(rs):.1f}%, largest "
+                  f"{100 * max(rs):.1f}%")
+
+
+def run_and_print(args, name, ref, fluid_only, ratios):
+    """Runs one scene and prints its row; a fluid-only scene's MLUPS becomes the reference of
+    the coupled scenes after it, a coupled scene's ratio is added to `ratios`."""
+    r = run_scene(args, name)
+    if not r["coupled"]:
+        fluid_only[name] = r["mlups"]
+        print(f"  {name:<26} {r['cells']:>9} {r['mlups']:>7.2f} {'1':>7} |", flush=True)
+        return
+    if ref in fluid_only:
+        ratios.setdefault(name, []).append(r["mlups"] / fluid_only[ref])
+    ratio = f"{100 * r['mlups'] / fluid_only[ref]:.1f}%" if ref in fluid_only else "-"
+    ms = lambda k: f"{1e3 * r[k]:.2f}"  # noqa: E731
+    rate = r["spheres"] * r["substeps"] / r["dem"] if r["dem"] > 0 else 0.0
+    print(f"  {name:<26} {r['cells']:>9} {r['mlups']:>7.2f} {ratio:>7} | {ms('lattice'):>8} "
+          f"{ms('bodies'):>8} {ms('f_exchange'):>6} {ms('f_idle'):>6} | {ms('dem'):>8} "
+          f"{r['substeps']:>4} {ms('d_exchange'):>6} {ms('d_idle'):>6} {rate:>11.3g}",
+          flush=True)
 
 
 if __name__ == "__main__":
