@@ -61,7 +61,7 @@ void restore_covered(hlbm::PenaltyLoads<T>& loads, const hlbm::BodyField<T>& bod
                      MPI_Comm comm) {
   using Memory = typename hlbm::PenaltyLoads<T>::CoveredMemory;
   std::map<std::int64_t, Memory> mine;
-  for (const auto& m : loads.covered_memory(bodies)) mine[m.id] = Memory{m.id, {}, {}};
+  for (const auto& m : loads.covered_memory(bodies)) mine[m.id] = Memory{m.id, {}, {}, {}};
   std::int64_t ids = 0;
   for (const CoveredRecord& r : records) ids = std::max(ids, r.id + 1);
   std::vector<int> lowest(static_cast<std::size_t>(ids), std::numeric_limits<int>::max());
@@ -80,9 +80,11 @@ void restore_covered(hlbm::PenaltyLoads<T>& loads, const hlbm::BodyField<T>& bod
                         " covered fluid on this rank at the checkpoint but is not here now");
       continue;
     }
+    // Every rank summed L about the same centre (it wraps alike on every rank).
     for (int a = 0; a < 3; ++a) {
       it->second.covered[a] += r.covered[a];
       it->second.covered_moment[a] += r.covered_moment[a];
+      it->second.centre[a] = r.centre[a];
     }
   }
   for (const auto& [id, m] : mine) loads.restore_covered(bodies, m);
@@ -176,7 +178,7 @@ void rebalance(AppContext& ctx, FluidRun<T>& run, FluidCoupler& coupler, StateFe
   }
   std::vector<CoveredRecord> covered;
   for (const auto& m : penalty_loads.covered_memory(*bodies))
-    covered.push_back({ctx.rank, m.id, m.covered, m.covered_moment});
+    covered.push_back({ctx.rank, m.id, m.covered, m.covered_moment, m.centre});
   covered = gather_to_root(std::span<const CoveredRecord>(covered), ctx.side_comm);
   broadcast(covered, 0, ctx.side_comm);
   bodies.reset();
@@ -317,7 +319,7 @@ int run_typed(AppContext& ctx) {
   session.on_checkpoint([&](const std::string& prefix, const CheckpointHeader& header) {
     std::vector<CoveredRecord> covered;
     for (const auto& m : penalty_loads.covered_memory(*bodies))
-      covered.push_back({solver_rank, m.id, m.covered, m.covered_moment});
+      covered.push_back({solver_rank, m.id, m.covered, m.covered_moment, m.centre});
     SeriesLengths lengths;
     lengths.series = watch.series_bytes();
     if (audit) lengths.momentum = audit->bytes();

@@ -18,7 +18,7 @@ namespace {
 
 // force, controller integral, impulse, mean velocity (3 each), mass
 constexpr int kMemoryValues = 13;
-constexpr int kCoveredValues = 8;  // rank, id, Q (3), L (3)
+constexpr int kCoveredValues = 11;  // rank, id, Q (3), L (3), centre (3)
 
 template <class T>
 hid_t h5_type() {
@@ -95,7 +95,10 @@ std::vector<double> read_table(hid_t file, const char* name, int cols) {
   H5Handle space(H5Dget_space(set), H5Sclose, "table space");
   hsize_t dims[2] = {0, 0};
   H5Sget_simple_extent_dims(space, dims, nullptr);
-  if (dims[1] != hsize_t(cols)) throw std::runtime_error(std::string(name) + " has wrong width");
+  if (dims[1] != hsize_t(cols))
+    throw std::runtime_error(std::string(name) + " has " + std::to_string(dims[1]) +
+                             " columns where this fluid_app expects " + std::to_string(cols) +
+                             ": written by another version");
   std::vector<double> rows(dims[0] * dims[1]);
   if (!rows.empty())
     h5_check(H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, rows.data()),
@@ -176,6 +179,7 @@ void write_fluid_checkpoint(const std::string& prefix, const CheckpointHeader& h
       covered.push_back(double(r.id));
       covered.insert(covered.end(), r.covered.begin(), r.covered.end());
       covered.insert(covered.end(), r.covered_moment.begin(), r.covered_moment.end());
+      covered.insert(covered.end(), r.centre.begin(), r.centre.end());
     }
     int rows = int(covered.size() / kCoveredValues);
     MPI_Bcast(&rows, 1, MPI_INT, 0, comm);
@@ -239,6 +243,7 @@ FluidRestart read_fluid_checkpoint(const std::string& prefix, const CheckpointHe
       for (int k = 0; k < 3; ++k) {
         rec.covered[k] = c[i + 2 + k];
         rec.covered_moment[k] = c[i + 5 + k];
+        rec.centre[k] = c[i + 8 + k];
       }
       r.covered.push_back(rec);
     }

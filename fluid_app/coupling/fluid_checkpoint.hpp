@@ -36,7 +36,7 @@ namespace lbdem {
 struct CoveredRecord {
   std::int64_t rank = 0;
   std::int64_t id = 0;
-  std::array<double, 3> covered{}, covered_moment{};
+  std::array<double, 3> covered{}, covered_moment{}, centre{};  // Q, L and the centre L is about
 };
 
 struct SeriesLengths {

@@ -84,6 +84,11 @@ class BodyField {
     return tracked_[static_cast<std::size_t>(slot)].id;
   }
   const LatticeFrame& frame() const { return frame_; }
+  // Centre of the body in a slot at the last update (lattice coordinates, wrapped into the
+  // domain on periodic axes): the point its loads' moments are summed about.
+  const Eigen::Vector3d& centre(std::int32_t slot) const {
+    return tracked_[static_cast<std::size_t>(slot)].x;
+  }
 
   // A cell of a body's porous band (0 < d_k < 1): d_k and local coordinates, 12 B (the index
   // follows from the coordinates by a multiply-add; the coordinates from an index would need

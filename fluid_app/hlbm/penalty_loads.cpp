@@ -32,14 +32,24 @@ std::vector<BodyLoad> PenaltyLoads<T>::loads(const BodyField<T>& bodies, std::in
     CoveredMemory& m = by_slot_[s];
     m.id = id;  // a body new in this slot starts from Q = L = 0
     const PenaltyExchange e = s < known ? field.exchange[s] : PenaltyExchange{};
+    const Eigen::Vector3d& x = bodies.centre(static_cast<std::int32_t>(s));
+    // The move since L^{n-1} was summed (minimum image: the centre wraps on periodic axes), and
+    // the moment about x^n that Q^{n-1} had about x^{n-1}.
+    Eigen::Vector3d moved, q_last;
+    for (int a = 0; a < 3; ++a) {
+      moved[a] = bodies.subdomain().min_image(a, x[a] - m.centre[a]);
+      q_last[a] = m.covered[a];
+    }
+    const Eigen::Vector3d carried = moved.cross(q_last);
     BodyLoad load;
     load.id = id;
     load.step = step;
     for (int a = 0; a < 3; ++a) {
       const double f = -e.impulse[a] + (e.covered[a] - m.covered[a]);
-      const double t = -e.moment[a] + (e.covered_moment[a] - m.covered_moment[a]);
+      const double t = -e.moment[a] + (e.covered_moment[a] - m.covered_moment[a]) + carried[a];
       load.f[a] = f * units.force();
       load.t[a] = t * units.torque();
+      m.centre[a] = x[a];
     }
     m.covered = e.covered;
     m.covered_moment = e.covered_moment;
@@ -58,7 +68,7 @@ std::vector<typename PenaltyLoads<T>::CoveredMemory> PenaltyLoads<T>::covered_me
     if (s < by_slot_.size() && by_slot_[s].id == id)
       out.push_back(by_slot_[s]);
     else
-      out.push_back({id, {}, {}});
+      out.push_back({id, {}, {}, {}});
   }
   return out;
 }

@@ -64,6 +64,26 @@ def momentum_change(fluid, bodies, applied):
     return total - total[0]
 
 
+def verlet_orbital_gain(x, v, mass, box):
+    """Angular momentum (T, 3), summed over bodies and from the first row on, that the DEM's
+    velocity Verlet adds to the bodies' orbital part sum (x - c) x m v beyond the moment of the
+    loads' impulse, from positions x and velocities v (T, N, 3) at every fluid step, masses (N,)
+    and the periodic box lengths (3,) (minimum image of the moves).
+
+    Under a load F constant over the step Verlet moves a body exactly along
+    x(t) = x^n + v^n t + F t^2 / (2 m) (its substeps too), so
+    (x^{n+1} - c) x m v^{n+1} - (x^n - c) x m v^n = (x^n - c) x F dt + (x^{n+1} - x^n) x m v^{n+1}:
+    the first term is the moment of the impulse the fluid gave up (about c, at x^n), the second,
+    dt^2 / 2 v^n x F, is the integrator's own (docs/method-loads.md section 7). Exact without
+    contacts (a contact force varies within the step)."""
+    x, v = np.asarray(x, float), np.asarray(v, float)
+    box = np.asarray(box, float)
+    moved = np.diff(x, axis=0)
+    moved -= box * np.round(moved / box)
+    per_step = np.cross(moved, np.asarray(mass, float)[None, :, None] * v[1:]).sum(axis=1)
+    return np.vstack([np.zeros(3), np.cumsum(per_step, axis=0)])
+
+
 def fit_hindered_settling(phi, u, err=None):
     """Least-squares fit of u = k (1 - phi)^n (u: u/u_T at solid fractions phi), as a straight
     line ln u = ln k + n ln(1 - phi), weighted by the relative errors err / u when given. Returns

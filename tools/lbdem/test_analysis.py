@@ -278,6 +278,31 @@ class SmoothedPeak(unittest.TestCase):
         self.assertTrue(np.array_equal(smooth, u))
 
 
+class VerletOrbitalGain(unittest.TestCase):
+    def test_constant_force_leaves_the_impulse_moment_and_the_verlet_term(self):
+        # One body under a constant force, stepped exactly as velocity Verlet moves it: the
+        # orbital angular momentum changes by the impulse's moment at x^n plus the returned term.
+        m, dt, f = 2.0, 0.1, np.array([0.3, -0.2, 0.5])
+        x, v = [np.array([0.2, 0.4, 0.1])], [np.array([1.0, 0.5, -0.25])]
+        impulse_moment = np.zeros(3)
+        for _ in range(6):
+            impulse_moment += np.cross(x[-1], f * dt)
+            x.append(x[-1] + v[-1] * dt + f * dt * dt / (2 * m))
+            v.append(v[-1] + f * dt / m)
+        x, v = np.array(x)[:, None, :], np.array(v)[:, None, :]
+        gain = analysis.verlet_orbital_gain(x, v, [m], [10.0, 10.0, 10.0])
+        orbital = np.cross(x[:, 0], m * v[:, 0])
+        np.testing.assert_allclose(orbital[-1] - orbital[0] - impulse_moment, gain[-1],
+                                   rtol=1e-12, atol=1e-15)
+        self.assertGreater(np.abs(gain[-1]).max(), 1e-4)  # not zero: v x F != 0 here
+
+    def test_a_move_across_the_periodic_face_counts_as_the_short_move(self):
+        x = np.array([[[9.95, 0.0, 0.0]], [[0.05, 0.0, 0.0]]])
+        v = np.array([[[1.0, 1.0, 0.0]], [[1.0, 1.0, 0.0]]])
+        gain = analysis.verlet_orbital_gain(x, v, [1.0], [10.0, 10.0, 10.0])
+        np.testing.assert_allclose(gain[-1], [0.0, 0.0, 0.1], atol=1e-12)
+
+
 class KnownOff(unittest.TestCase):
     """A known-off case passes only while it stays off, inside its recorded band."""
 
