@@ -69,11 +69,32 @@ void check_resolution(const Scene& scene) {
   }
 }
 
+// With a fluid, a shape's voxel spacing is also the spacing h of the porosity stencil: the
+// nearest lookup reads the voxels at x + h c_i with the offsets c_i in whole voxels, and the
+// trilinear one averages whole-voxel neighbours once for all (fluid_app/hlbm/
+// reference_porosity.hpp). The method (the paper's, and the band calibration measured on it)
+// takes h = dx / 2; another voxel_size would silently change the stencil, so it is refused.
+void check_voxel_size(const Scene& scene) {
+  if (!scene.fluid) return;
+  const double h = 0.5 * scene.fluid->dx;
+  for (size_t i = 0; i < scene.shapes.size(); ++i) {
+    const ShapeParams& sh = scene.shapes[i];
+    if (sh.voxel_size <= 0 || std::abs(sh.voxel_size - h) <= 1e-9 * h) continue;
+    std::ostringstream m;
+    m << scene.file << ": shapes[" << i << "] '" << sh.name << "': voxel_size: " << sh.voxel_size
+      << " m, but with a fluid the voxel spacing is the porosity stencil's, half the fluid "
+         "spacing (fluid.dx / 2 = "
+      << h << " m); leave voxel_size out or give that value";
+    throw SceneError(m.str());
+  }
+}
+
 }  // namespace
 
 void check_whole_scene(const Scene& scene, double memory_bytes) {
   check_memory(scene, memory_bytes);
   check_resolution(scene);
+  check_voxel_size(scene);
   const std::vector<Shape> shapes = build_scene_shapes(scene);
   // Without a box the DEM's own setup refuses the scene with its message.
   if (const auto box = dem_box(scene))

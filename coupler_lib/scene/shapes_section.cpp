@@ -93,8 +93,10 @@ const MappingSchema& shape_schema() {
       "a body shape of the catalogue",
       {key::text("name", "shape name used by bodies").required(),
        key::choice("kind", words_of(kShapeKindWords), "shape kind").required(),
-       key::number("voxel_size",
-                   "voxel spacing in m (0: half the fluid spacing, or size/40 without a fluid)")
+       key::number(
+           "voxel_size",
+           "voxel spacing in m (0: half the fluid spacing, the only value a scene with a fluid "
+           "accepts; without a fluid any, 0: size/40)")
            .or_default(0.0)
            .within(Bounds::non_negative())
            .in("m"),
