@@ -20,8 +20,9 @@ double fluid_memory_bytes(const FluidParams& fluid, bool bodies);
 // Throws SceneError for: a shape that cannot be built (unreadable or degenerate STL, a body
 // thinner than the voxel spacing), a body outside the box, larger than it, through a wall or
 // overlapping another body (body_placement.hpp), a body thinner than one fluid cell in a coupled
-// scene, a shape's voxel_size other than fluid.dx / 2 in a scene with a fluid, and a fluid lattice that needs more than `memory_bytes` (the physical memory of the
-// job's nodes; 0: not checked).
+// scene, a shape's voxel_size other than fluid.dx / 2 in a scene with a fluid, and a fluid
+// lattice that needs more than `memory_bytes` (the physical memory of the job's nodes; 0: not
+// checked).
 void check_whole_scene(const Scene& scene, double memory_bytes);
 
 // The box the DEM works in (dem_app/setup/dem_setup.cpp resolves it alike): dem.box, else the fluid

@@ -35,12 +35,9 @@ std::vector<BodyLoad> PenaltyLoads<T>::loads(const BodyField<T>& bodies, std::in
     const Eigen::Vector3d& x = bodies.centre(static_cast<std::int32_t>(s));
     // The move since L^{n-1} was summed (minimum image: the centre wraps on periodic axes), and
     // the moment about x^n that Q^{n-1} had about x^{n-1}.
-    Eigen::Vector3d moved, q_last;
-    for (int a = 0; a < 3; ++a) {
-      moved[a] = bodies.subdomain().min_image(a, x[a] - m.centre[a]);
-      q_last[a] = m.covered[a];
-    }
-    const Eigen::Vector3d carried = moved.cross(q_last);
+    Eigen::Vector3d moved;
+    for (int a = 0; a < 3; ++a) moved[a] = bodies.subdomain().min_image(a, x[a] - m.centre[a]);
+    const Eigen::Vector3d carried = moved.cross(Eigen::Vector3d(m.covered.data()));
     BodyLoad load;
     load.id = id;
     load.step = step;
