@@ -56,7 +56,7 @@ def scale_old(offset):
     return 1 - offset * 2 / (3 * TUBE)
 
 # case: name -> (dx, tau, radius, scale); the band's excess in cells (band_calibration.cpp).
-EXC = {0.6: 0.346, 1.0: -0.130}
+EXC = {0.6: 0.353, 1.0: -0.129}
 defs = {}
 for dx, tag in ((1e-4, "d1"), (5e-5, "d2"), (1e-4 / 3, "d3"), (2.5e-5, "d4")):
     for tau in (0.6, 1.0):

@@ -166,7 +166,7 @@ void shape_entry(Node& n, const ShapeParams& p, const Shape& sh) {
   n.member("equivalent_diameter")
       .set(json_number(std::cbrt(6.0 * sh.mass.volume / std::numbers::pi)));
   n.member("bounding_radius").set(json_number(sh.bounding_radius));
-  n.member("voxel_size").set(json_number(sh.voxels.h));
+  n.member("voxel_size").set(json_number(sh.voxel_spacing));
   const auto& m = sh.mass.principal_moments;
   n.member("principal_moments_per_density").set(json_list(std::array<double, 3>{m[0], m[1], m[2]}));
   n.member("clump_spheres").set(json_int(static_cast<long long>(sh.clump.size())));

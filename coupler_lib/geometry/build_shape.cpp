@@ -85,7 +85,7 @@ Shape build_shape(const ShapeParams& p, double h) {
   }();
   Voxels vox = voxelize(solid, h, kVoxelPad);
   shape.mass = mass_properties(solid);
-  shape.reference_volume = mass_properties(vox).volume;
+  shape.voxel_spacing = h;
   if (vox.count() < kMinSolidVoxels) {
     std::ostringstream s;
     s << p.where << ": shape '" << p.name << "': only " << vox.count()
@@ -94,7 +94,6 @@ Shape build_shape(const ShapeParams& p, double h) {
     throw ShapeError(s.str());
   }
   const Eigen::Vector3d c = shape.mass.centroid;
-  shape.bounding_radius = bounding_radius(vox, c);
 
   Clump clump;  // input frame
   const auto& cp = p.clump;
@@ -120,33 +119,36 @@ Shape build_shape(const ShapeParams& p, double h) {
   }
   shape.clump_quality = clump_quality(clump, vox);
   const double reach = clump_reach(clump, c);
-  const bool too_big = reach > 1.1 * shape.bounding_radius + 2 * h;
+  const double solid_radius = bounding_radius(vox, c);
+  const bool too_big = reach > 1.1 * solid_radius + 2 * h;
   if (cp.source == ClumpSource::file &&
       (too_big || shape.clump_quality.volume_error > kMaxFileClumpVolumeError)) {
     std::ostringstream s;
     s << p.where << ": shape '" << p.name << "': clump file " << cp.file
       << " does not fit the shape: ";
     if (too_big)
-      s << "its spheres reach " << reach << " m from the centroid, the shape only "
-        << shape.bounding_radius << " m";
+      s << "its spheres reach " << reach << " m from the centroid, the shape only " << solid_radius
+        << " m";
     else
       s << "it misses " << shape.clump_quality.volume_error << " of the shape volume";
     s << "; check clump.scale (now " << cp.scale << ")";
     throw ShapeError(s.str());
   }
   shape.clump = translated(std::move(clump), c);
-  shape.voxels = translated(std::move(vox), c);
-  if (p.hydrodynamic_scale != 1 || p.hydrodynamic_offset != 0) {
-    // The fluid's reference lattice is the voxelization of the scaled and offset solid, at the
-    // same spacing, centred on the scaled solid's centroid; its bounding radius sets which
-    // fluid ranks receive the body.
+  // The fluid's reference lattice (shape.hpp): voxels of h / 2 holding the fill of a box of
+  // side h, of the true solid or of the scaled and offset one the fluid sees, centred on that
+  // solid's centroid; its bounding radius sets which fluid ranks receive the body.
+  const double r = h / 2;
+  Voxels reference;
+  Eigen::Vector3d cs = c;
+  if (p.hydrodynamic_scale == 1 && p.hydrodynamic_offset == 0) {
+    reference = voxelize(solid, r, kVoxelPad);
+  } else {
     const ShapeParams sp = scaled_params(p, p.hydrodynamic_scale);
     const double offset = p.hydrodynamic_offset;
-    Voxels scaled;
-    Eigen::Vector3d cs;
     if (offset == 0 || offset_is_a_parameter(p.kind)) {
       const SolidGeometry scaled_solid = make_solid(offset == 0 ? sp : offset_params(sp, offset));
-      scaled = voxelize(scaled_solid, h, kVoxelPad);
+      reference = voxelize(scaled_solid, r, kVoxelPad);
       cs = mass_properties(scaled_solid).centroid;
     } else {
       // The parallel body lies in the frame of the solid it is taken from, so it is centred
@@ -154,14 +156,15 @@ Shape build_shape(const ShapeParams& p, double h) {
       const SolidGeometry scaled_solid = make_solid(sp);
       if (!((scaled_solid.upper() - scaled_solid.lower()).minCoeff() > 2 * offset))
         throw ShapeError(no_solid_left(p, offset));
-      scaled = voxelize_offset(scaled_solid, offset, h, kVoxelPad);
+      reference = voxelize_offset(scaled_solid, offset, r, kVoxelPad);
       cs = mass_properties(scaled_solid).centroid;
     }
-    if (scaled.count() == 0) throw ShapeError(no_solid_left(p, offset));
-    shape.reference_volume = mass_properties(scaled).volume;
-    shape.bounding_radius = bounding_radius(scaled, cs);
-    shape.voxels = translated(std::move(scaled), cs);
+    if (reference.count() == 0) throw ShapeError(no_solid_left(p, offset));
   }
+  reference = box_averaged(std::move(reference));
+  shape.reference_volume = mass_properties(reference).volume;
+  shape.bounding_radius = bounding_radius(reference, cs);
+  shape.voxels = translated(std::move(reference), cs);
   return shape;
 }
 

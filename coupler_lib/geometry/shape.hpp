@@ -82,13 +82,18 @@ struct ClumpQuality {
 
 struct Shape {
   std::string name;
-  Voxels voxels;                // reference lattice, in the shape frame
+  // The fluid's reference lattice, in the shape frame: voxels of half the shape's voxel spacing
+  // (dx / 4 in a scene with a fluid), each holding the solid fraction of the box of side
+  // voxel_spacing (the stencil spacing dx / 2) centred on it, so that the nearest lookup moves
+  // no stencil point by more than dx / 8 (docs/method.md, "Reference lattice").
+  Voxels voxels;
+  double voxel_spacing = 0;     // m, the solid's voxelization (clump, its quality)
   MassProperties mass;          // of the solid itself (exact)
   double reference_volume = 0;  // m^3, sum of fill h^3: the volume the fluid embeds
   Clump clump;
   ClumpQuality clump_quality;
   std::string clump_source;    // "file <path>", "surface n=10 ...", "fill spheres=100 ..."
-  double bounding_radius = 0;  // m: max distance of any corner of a voxel holding solid
+  double bounding_radius = 0;  // m: max distance of any corner of a reference voxel with fill
 };
 
 }  // namespace lbdem

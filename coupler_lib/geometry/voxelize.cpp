@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include "coupler_lib/errors.hpp"
 #include "coupler_lib/geometry/ray_parity.hpp"
@@ -98,6 +100,29 @@ Voxels voxelize(const SolidGeometry& geometry, double h, int pad) {
       for (int i = 0; i < v.n[0]; ++i)
         v.solid[v.index(i, j, k)] = geometry.inside(v.center(i, j, k)) ? 1 : 0;
   fill_fractions(geometry, v);
+  return v;
+}
+
+Voxels box_averaged(Voxels v) {
+  // One axis at a time (the cube's volume fractions are products of the per-axis ones), each
+  // pass summed in double from the previous pass's values.
+  std::vector<double> a(v.fill.begin(), v.fill.end()), b(a.size());
+  const std::array<std::size_t, 3> stride = {1, static_cast<std::size_t>(v.n[0]),
+                                             static_cast<std::size_t>(v.n[0]) * v.n[1]};
+  for (int axis = 0; axis < 3; ++axis) {
+    const std::size_t s = stride[static_cast<std::size_t>(axis)];
+    for (int k = 0; k < v.n[2]; ++k)
+      for (int j = 0; j < v.n[1]; ++j)
+        for (int i = 0; i < v.n[0]; ++i) {
+          const std::size_t idx = v.index(i, j, k);
+          const int l = axis == 0 ? i : axis == 1 ? j : k;
+          const double below = l > 0 ? a[idx - s] : 0.0;
+          const double above = l + 1 < v.n[static_cast<std::size_t>(axis)] ? a[idx + s] : 0.0;
+          b[idx] = 0.25 * below + 0.5 * a[idx] + 0.25 * above;
+        }
+    std::swap(a, b);
+  }
+  for (std::size_t idx = 0; idx < a.size(); ++idx) v.fill[idx] = static_cast<float>(a[idx]);
   return v;
 }
 

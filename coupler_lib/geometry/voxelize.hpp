@@ -21,6 +21,13 @@ Voxels empty_lattice(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, doubl
 Voxels voxelize(const SolidGeometry& geometry, double h, int pad = 2);
 Voxels voxelize_mesh(const TriangleMesh& mesh, double h, int pad = 2);
 
+// The same lattice with each voxel's fill replaced by the solid fraction of the cube of side 2 h
+// centred on it (h the lattice spacing), each voxel's fill taken as spread evenly over it: per
+// axis that cube covers the voxel (weight 1/2) and half of each neighbour (1/4 each). Exact
+// where the fills are 0 or 1; the total fill is kept where the outer layer is empty. The
+// fluid's reference lattice (build_shape.hpp) is this at h = dx / 4.
+Voxels box_averaged(Voxels v);
+
 // The same lattice, translated by -shift (e.g. into the shape frame: shift = centroid).
 Voxels translated(Voxels v, const Eigen::Vector3d& shift);
 

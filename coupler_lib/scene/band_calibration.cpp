@@ -14,44 +14,44 @@ struct Point {
 
 // tools/calibrate_band.py --cells 8 (sphere d = 8 dx in a periodic box of 3 d, phi 0.019,
 // Re 0.01), mean of the sphere centred on a node and off it by (0.31, 0.17, 0.43) dx; the two
-// differ by 0.03-0.06 cells. Measured values and how to rerun them: docs/validation.md,
-// section 6 "The calibrated hydrodynamic radius".
-constexpr std::array<Point, 17> kNearest{{{0.505, 0.843},
-                                          {0.51, 0.750},
-                                          {0.52, 0.653},
-                                          {0.53, 0.583},
-                                          {0.55, 0.492},
-                                          {0.575, 0.410},
-                                          {0.6, 0.346},
-                                          {0.65, 0.249},
-                                          {0.7, 0.173},
-                                          {0.8, 0.053},
-                                          {0.9, -0.045},
-                                          {1.0, -0.130},
+// differ by at most 0.017 cells (tau 0.505). Measured values and how to rerun them:
+// docs/validation.md, section 6 "The calibrated hydrodynamic radius".
+constexpr std::array<Point, 17> kNearest{{{0.505, 0.872},
+                                          {0.51, 0.778},
+                                          {0.52, 0.671},
+                                          {0.53, 0.600},
+                                          {0.55, 0.503},
+                                          {0.575, 0.418},
+                                          {0.6, 0.353},
+                                          {0.65, 0.254},
+                                          {0.7, 0.176},
+                                          {0.8, 0.055},
+                                          {0.9, -0.044},
+                                          {1.0, -0.129},
                                           {1.2, -0.279},
-                                          {1.5, -0.474},
-                                          {2.0, -0.761},
-                                          {2.5, -1.020},
-                                          {3.0, -1.256}}};
+                                          {1.5, -0.475},
+                                          {2.0, -0.763},
+                                          {2.5, -1.022},
+                                          {3.0, -1.258}}};
 
-// The same runs with fluid.porosity_lookup: trilinear (a wider band: 0.03-0.11 cells more).
-constexpr std::array<Point, 17> kTrilinear{{{0.505, 0.959},
-                                            {0.51, 0.857},
-                                            {0.52, 0.741},
-                                            {0.53, 0.665},
-                                            {0.55, 0.561},
-                                            {0.575, 0.471},
-                                            {0.6, 0.402},
-                                            {0.65, 0.298},
-                                            {0.7, 0.218},
-                                            {0.8, 0.092},
-                                            {0.9, -0.010},
-                                            {1.0, -0.098},
-                                            {1.2, -0.251},
-                                            {1.5, -0.449},
-                                            {2.0, -0.740},
-                                            {2.5, -1.001},
-                                            {3.0, -1.239}}};
+// The same runs with fluid.porosity_lookup: trilinear (a wider band: 0.007-0.04 cells more).
+constexpr std::array<Point, 17> kTrilinear{{{0.505, 0.912},
+                                            {0.51, 0.813},
+                                            {0.52, 0.700},
+                                            {0.53, 0.627},
+                                            {0.55, 0.526},
+                                            {0.575, 0.438},
+                                            {0.6, 0.372},
+                                            {0.65, 0.270},
+                                            {0.7, 0.192},
+                                            {0.8, 0.068},
+                                            {0.9, -0.032},
+                                            {1.0, -0.118},
+                                            {1.2, -0.269},
+                                            {1.5, -0.466},
+                                            {2.0, -0.755},
+                                            {2.5, -1.014},
+                                            {3.0, -1.251}}};
 
 template <std::size_t N>
 std::optional<double> interpolate(const std::array<Point, N>& table, double tau) {

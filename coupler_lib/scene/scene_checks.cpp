@@ -69,11 +69,12 @@ void check_resolution(const Scene& scene) {
   }
 }
 
-// With a fluid, a shape's voxel spacing is also the spacing h of the porosity stencil: the
-// nearest lookup reads the voxels at x + h c_i with the offsets c_i in whole voxels, and the
-// trilinear one averages whole-voxel neighbours once for all (fluid_app/hlbm/
-// reference_porosity.hpp). The method (the paper's, and the band calibration measured on it)
-// takes h = dx / 2; another voxel_size would silently change the stencil, so it is refused.
+// With a fluid, a shape's voxel spacing is also the spacing h of the porosity stencil, and the
+// fluid's reference lattice has voxels of h / 2 holding the fill of a box h (shape.hpp): the
+// nearest lookup reads the voxels at x + h c_i, two voxels per c_i, and the trilinear one
+// averages those neighbours once for all (fluid_app/hlbm/reference_porosity.hpp). The method
+// (the band calibration is measured on it) takes h = dx / 2; another voxel_size would silently
+// change the stencil and the box, so it is refused.
 void check_voxel_size(const Scene& scene) {
   if (!scene.fluid) return;
   const double h = 0.5 * scene.fluid->dx;

@@ -95,8 +95,9 @@ const MappingSchema& shape_schema() {
        key::choice("kind", words_of(kShapeKindWords), "shape kind").required(),
        key::number(
            "voxel_size",
-           "voxel spacing in m (0: half the fluid spacing, the only value a scene with a fluid "
-           "accepts; without a fluid any, 0: size/40)")
+           "voxel spacing in m of the shape's voxelization; the fluid's reference lattice has "
+           "half of it (0: half the fluid spacing, the only value a scene with a fluid accepts; "
+           "without a fluid any, 0: size/40)")
            .or_default(0.0)
            .within(Bounds::non_negative())
            .in("m"),

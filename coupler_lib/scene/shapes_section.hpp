@@ -8,7 +8,8 @@
 //       edge: 0.283e-3        # sphere: diameter; cube: edge; cuboid: edges [a,b,c];
 //                             # ellipsoid: semi_axes [a,b,c]; stl: file + scale
 //       clump: {file: ../shapes/cube_489_surface.clump, scale: 0.283e-3}
-//       voxel_size: 5e-6      # optional; default: half the fluid spacing
+//       voxel_size: 5e-6      # optional; default: half the fluid spacing (the fluid's
+//                             # reference lattice: half of that)
 #include <vector>
 
 #include "coupler_lib/geometry/shape_params.hpp"

@@ -45,7 +45,16 @@ BodyField<T>::BodyField(std::span<const Shape> shapes, const Subdomain& sub,
   field_.bodies.clear();
   field_.active = false;
   shapes_.reserve(shapes.size());
-  for (const Shape& s : shapes) shapes_.emplace_back(s.voxels);
+  // The stencil spacing dx / 2 is a whole number of voxels (2 for the scenes' reference
+  // lattice of dx / 4, shape.hpp).
+  for (const Shape& s : shapes) {
+    const double step = frame.units.dx / (2 * s.voxels.h);
+    if (!(std::abs(step - std::round(step)) < 1e-6 && std::round(step) >= 1))
+      throw std::invalid_argument("BodyField: shape '" + s.name + "' has voxels of " +
+                                  std::to_string(s.voxels.h) +
+                                  " m; the stencil spacing dx / 2 must be a whole number of them");
+    shapes_.emplace_back(s.voxels, static_cast<int>(std::lround(step)));
+  }
 }
 
 template <class T>
@@ -80,10 +89,13 @@ void BodyField<T>::set_pose(Tracked& t, const BodyState& s) const {
                                 " has a degenerate orientation quaternion");
   t.rot = q.normalized().toRotationMatrix();
   t.to_ref = t.rot.transpose() * (dx / shapes_[static_cast<std::size_t>(t.shape)].spacing());
-  // h c_i in lattice units is (h / dx) c_i; mapped by to_ref = rot^T dx / h it is rot^T c_i.
+  // (dx / 2) c_i in lattice units is c_i / 2; mapped by to_ref = rot^T dx / h_voxel it is
+  // step rot^T c_i, step = dx / (2 h_voxel).
+  const double step = shapes_[static_cast<std::size_t>(t.shape)].step();
   for (std::size_t i = 0; i < d3q19::c.size(); ++i) {
     const Eigen::Vector3d o =
-        t.rot.transpose() * Eigen::Vector3d(d3q19::c[i][0], d3q19::c[i][1], d3q19::c[i][2]);
+        t.rot.transpose() *
+        Eigen::Vector3d(step * d3q19::c[i][0], step * d3q19::c[i][1], step * d3q19::c[i][2]);
     t.stencil.x[i] = o.x();
     t.stencil.y[i] = o.y();
     t.stencil.z[i] = o.z();

@@ -15,14 +15,18 @@
 
 namespace lbdem::hlbm {
 
-ReferencePorosity::ReferencePorosity(const Voxels& voxels) : h_(voxels.h) {
+ReferencePorosity::ReferencePorosity(const Voxels& voxels, int step)
+    : h_(voxels.h), step_(step), pad_(step + 1) {
   const auto& n = voxels.n;
-  if (!(h_ > 0) || n[0] < 1 || n[1] < 1 || n[2] < 1 ||
+  if (!(h_ > 0) || step < 1 || n[0] < 1 || n[1] < 1 || n[2] < 1 ||
       voxels.fill.size() != static_cast<std::size_t>(n[0]) * n[1] * n[2])
-    throw std::invalid_argument(
-        "reference porosity: empty or inconsistent voxel lattice (h=" + std::to_string(h_) + ")");
-  for (int a = 0; a < 3; ++a) m_[a] = n[a] + 2 * kPad;
-  shift_ = -voxels.origin / h_ + Eigen::Vector3d::Constant(kPad);
+    throw std::invalid_argument("reference porosity: empty or inconsistent voxel lattice (h=" +
+                                std::to_string(h_) + ", step " + std::to_string(step) + ")");
+  const double reach = step * std::sqrt(2.0) + 1e-9;  // the stencil's extent, voxels
+  point_pad_ = static_cast<int>(std::ceil(reach));
+  box_ = static_cast<int>(std::ceil(2 * reach)) + 1;
+  for (int a = 0; a < 3; ++a) m_[a] = n[a] + 2 * pad_;
+  shift_ = -voxels.origin / h_ + Eigen::Vector3d::Constant(pad_);
 
   // Fluid fraction of a voxel: 1 - fill, 1 off the lattice.
   auto fluid_at = [&](int i, int j, int k) {
@@ -39,18 +43,18 @@ ReferencePorosity::ReferencePorosity(const Voxels& voxels) : h_(voxels.h) {
   for (int k = 0; k < m_[2]; ++k)
     for (int j = 0; j < m_[1]; ++j)
       for (int i = 0; i < m_[0]; ++i, ++idx) {
-        fluid[idx] = fluid_at(i - kPad, j - kPad, k - kPad);
+        fluid[idx] = fluid_at(i - pad_, j - pad_, k - pad_);
         double sum = 0;
         for (const auto& c : d3q19::c)
-          sum += fluid_at(i - kPad + c[0], j - kPad + c[1], k - kPad + c[2]);
+          sum += fluid_at(i - pad_ + step * c[0], j - pad_ + step * c[1], k - pad_ + step * c[2]);
         // sum / 19 is exactly 1 (or 0) when all 19 points are wholly fluid (or solid).
         smooth_[idx] = static_cast<float>(sum / 19.0);
       }
 
-  const std::array<std::ptrdiff_t, 3> e = {m_[0] + 2 * kPointPad, m_[1] + 2 * kPointPad,
-                                           m_[2] + 2 * kPointPad};
+  const std::array<std::ptrdiff_t, 3> e = {m_[0] + 2 * point_pad_, m_[1] + 2 * point_pad_,
+                                           m_[2] + 2 * point_pad_};
   stride_ = {e[0], e[0] * e[1]};
-  fluid_origin_ = kPointPad * (1 + stride_[0] + stride_[1]);
+  fluid_origin_ = point_pad_ * (1 + stride_[0] + stride_[1]);
   fluid_.assign(static_cast<std::size_t>(e[0] * e[1] * e[2]), 1.0f);
   idx = 0;
   for (int k = 0; k < m_[2]; ++k)
@@ -59,62 +63,63 @@ ReferencePorosity::ReferencePorosity(const Voxels& voxels) : h_(voxels.h) {
         fluid_[static_cast<std::size_t>(fluid_origin_ + i + stride_[0] * j + stride_[1] * k)] =
             fluid[idx];
 
-  // 4^3 boxes: running minimum and maximum over voxels l .. l + 3 along each axis in turn, on
-  // the lattice of box origins l = -2 .. m - 1 (voxels beyond the padded lattice: fluid).
-  const std::array<int, 3> q = {m_[0] + 2, m_[1] + 2, m_[2] + 2};
-  box4_stride_ = {static_cast<std::size_t>(q[0]), static_cast<std::size_t>(q[0]) * q[1]};
-  const std::size_t boxes = box4_stride_[1] * static_cast<std::size_t>(q[2]);
+  // Boxes: running minimum and maximum over voxels l .. l + box_ - 1 along each axis in turn,
+  // on the lattice of box origins l = -point_pad_ .. m - 1 (voxels beyond the padded lattice:
+  // fluid).
+  const std::array<int, 3> q = {m_[0] + point_pad_, m_[1] + point_pad_, m_[2] + point_pad_};
+  block_stride_ = {static_cast<std::size_t>(q[0]), static_cast<std::size_t>(q[0]) * q[1]};
+  const std::size_t boxes = block_stride_[1] * static_cast<std::size_t>(q[2]);
   auto fluid_or_one = [&](int i, int j, int k) {
-    if (i < -kPointPad || j < -kPointPad || k < -kPointPad || i >= m_[0] + kPointPad ||
-        j >= m_[1] + kPointPad || k >= m_[2] + kPointPad)
+    if (i < -point_pad_ || j < -point_pad_ || k < -point_pad_ || i >= m_[0] + point_pad_ ||
+        j >= m_[1] + point_pad_ || k >= m_[2] + point_pad_)
       return 1.0f;
     return fluid_[static_cast<std::size_t>(fluid_origin_ + i + stride_[0] * j + stride_[1] * k)];
   };
-  std::vector<float> lo4(boxes), hi4(boxes);
+  std::vector<float> lo(boxes), hi(boxes);
   idx = 0;
   for (int k = 0; k < q[2]; ++k)
     for (int j = 0; j < q[1]; ++j)
       for (int i = 0; i < q[0]; ++i, ++idx) {
-        float l4 = 1.0f, h4 = 0.0f;
-        for (int s = 0; s < 4; ++s) {
-          const float v = fluid_or_one(i - 2 + s, j - 2, k - 2);
-          l4 = std::min(l4, v);
-          h4 = std::max(h4, v);
+        float l = 1.0f, u = 0.0f;
+        for (int s = 0; s < box_; ++s) {
+          const float v = fluid_or_one(i - point_pad_ + s, j - point_pad_, k - point_pad_);
+          l = std::min(l, v);
+          u = std::max(u, v);
         }
-        lo4[idx] = l4;
-        hi4[idx] = h4;
+        lo[idx] = l;
+        hi[idx] = u;
       }
   // Along y and z the values beyond the box lattice are those of voxels beyond the padded
   // lattice plus one: fluid.
   for (int a = 1; a < 3; ++a) {
-    const std::vector<float> l0 = lo4, h0 = hi4;
+    const std::vector<float> l0 = lo, h0 = hi;
     idx = 0;
     for (int k = 0; k < q[2]; ++k)
       for (int j = 0; j < q[1]; ++j)
         for (int i = 0; i < q[0]; ++i, ++idx)
-          for (int s = 1; s < 4; ++s) {
+          for (int s = 1; s < box_; ++s) {
             const int l = (a == 1 ? j : k) + s;
             if (l >= q[a]) {
-              hi4[idx] = std::max(hi4[idx], 1.0f);
+              hi[idx] = std::max(hi[idx], 1.0f);
               continue;
             }
-            const std::size_t o = idx + static_cast<std::size_t>(s) * box4_stride_[a - 1];
-            lo4[idx] = std::min(lo4[idx], l0[o]);
-            hi4[idx] = std::max(hi4[idx], h0[o]);
+            const std::size_t o = idx + static_cast<std::size_t>(s) * block_stride_[a - 1];
+            lo[idx] = std::min(lo[idx], l0[o]);
+            hi[idx] = std::max(hi[idx], h0[o]);
           }
   }
-  box4_.resize(boxes + 3);  // three bytes more: the batched lookup reads four at a box's byte
+  blocks_.resize(boxes + 3);  // three bytes more: the batched lookup reads four at a box's byte
   for (std::size_t v = 0; v < boxes; ++v)
-    box4_[v] = lo4[v] == 1.0f ? Block::fluid : hi4[v] == 0.0f ? Block::solid : Block::mixed;
+    blocks_[v] = lo[v] == 1.0f ? Block::fluid : hi[v] == 0.0f ? Block::solid : Block::mixed;
 
   for (int k = 0; k < n[2]; ++k)
     for (int j = 0; j < n[1]; ++j)
       for (int i = 0; i < n[0]; ++i) {
         if (fluid_at(i, j, k) == 1.0f) continue;
         const double r = (voxels.origin + h_ * Eigen::Vector3d(i, j, k)).norm();
-        // The smoothed porosity is < 1 up to sqrt(2) h (edge stencil point) plus sqrt(3) h
-        // (trilinear cell) from a solid voxel centre; 2 sqrt(3) h bounds both.
-        support_radius_ = std::max(support_radius_, r + 2.0 * std::sqrt(3.0) * h_);
+        // The smoothed porosity is < 1 up to step sqrt(2) h (edge stencil point) plus sqrt(3) h
+        // (trilinear cell) from a solid voxel centre; (step + 1) sqrt(3) h bounds both.
+        support_radius_ = std::max(support_radius_, r + (step + 1) * std::sqrt(3.0) * h_);
         surface_radius_ = std::max(surface_radius_, r + 0.5 * std::sqrt(3.0) * h_);
       }
 }
@@ -137,7 +142,7 @@ float ReferencePorosity::read_points(double x, double y, double z,
   return fluid / 19.0f;  // as the averaged lattice: exactly 0 or 1 at the ends
 }
 
-// The class of the 4^3 box every node's points can reach (four nodes at a time where AVX2 is
+// The class of the box every node's points can reach (four nodes at a time where AVX2 is
 // there, the same additions, comparisons, floors and truncations as box_at), then the 19 points
 // of the mixed ones.
 void ReferencePorosity::nearest(NearestBatch& batch, const NearestStencil& stencil) const {
@@ -145,15 +150,15 @@ void ReferencePorosity::nearest(NearestBatch& batch, const NearestStencil& stenc
   std::size_t count = 0, k = 0;
 #if defined(__AVX2__)
   const __m256d half = _mm256_set1_pd(kNearestHalf), zero = _mm256_setzero_pd();
-  const __m256d two = _mm256_set1_pd(2.0);
+  const __m256d pad = _mm256_set1_pd(point_pad_);
   const __m256d ex = _mm256_set1_pd(stencil.extent[0]), ey = _mm256_set1_pd(stencil.extent[1]),
                 ez = _mm256_set1_pd(stencil.extent[2]);
   const __m256d mx = _mm256_set1_pd(m_[0]), my = _mm256_set1_pd(m_[1]), mz = _mm256_set1_pd(m_[2]);
-  const __m128i sy = _mm_set1_epi32(static_cast<int>(box4_stride_[0]));
-  const __m128i sz = _mm_set1_epi32(static_cast<int>(box4_stride_[1]));
+  const __m128i sy = _mm_set1_epi32(static_cast<int>(block_stride_[0]));
+  const __m128i sz = _mm_set1_epi32(static_cast<int>(block_stride_[1]));
   const __m128i byte = _mm_set1_epi32(0xff), fluid = _mm_set1_epi32(int(Block::fluid));
   const __m128i mixed = _mm_set1_epi32(int(Block::mixed)), lanes = _mm_setr_epi32(1, 2, 4, 8);
-  const auto* boxes = reinterpret_cast<const int*>(box4_.data());
+  const auto* boxes = reinterpret_cast<const int*>(blocks_.data());
   for (; k + 4 <= n; k += 4) {
     const __m256d x = _mm256_add_pd(_mm256_loadu_pd(&batch.x[k]), half);
     const __m256d y = _mm256_add_pd(_mm256_loadu_pd(&batch.y[k]), half);
@@ -163,15 +168,15 @@ void ReferencePorosity::nearest(NearestBatch& batch, const NearestStencil& stenc
             _mm256_and_pd(_mm256_cmp_pd(x, zero, _CMP_GE_OQ), _mm256_cmp_pd(x, mx, _CMP_LT_OQ)),
             _mm256_and_pd(_mm256_cmp_pd(y, zero, _CMP_GE_OQ), _mm256_cmp_pd(y, my, _CMP_LT_OQ))),
         _mm256_and_pd(_mm256_cmp_pd(z, zero, _CMP_GE_OQ), _mm256_cmp_pd(z, mz, _CMP_LT_OQ)));
-    // Box origins floor(x - e) + 2 >= 0 on the padded lattice; lanes off it read box 0.
+    // Box origins floor(x - e) + point_pad_ >= 0 on the padded lattice; lanes off it read box 0.
     auto origin = [&](__m256d v, __m256d e) {
       return _mm256_cvttpd_epi32(
-          _mm256_and_pd(_mm256_add_pd(_mm256_floor_pd(_mm256_sub_pd(v, e)), two), on));
+          _mm256_and_pd(_mm256_add_pd(_mm256_floor_pd(_mm256_sub_pd(v, e)), pad), on));
     };
     const __m128i i = origin(x, ex), j = origin(y, ey), l = origin(z, ez);
     const __m128i box =
         _mm_add_epi32(_mm_add_epi32(i, _mm_mullo_epi32(j, sy)), _mm_mullo_epi32(l, sz));
-    // Four bytes read at each box's byte (box4_ is padded), the first kept; off the padded
+    // Four bytes read at each box's byte (blocks_ is padded), the first kept; off the padded
     // lattice: fluid.
     const __m128i read = _mm_and_si128(
         _mm_mask_i32gather_epi32(_mm_setzero_si128(), boxes, box, _mm_set1_epi32(-1), 1), byte);

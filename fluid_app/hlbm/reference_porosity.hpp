@@ -1,16 +1,18 @@
 #pragma once
 // The smoothed reference porosity of one shape (paper, appendix "Representation of a
-// particle in the fluid"): the shape's voxelization at the reference spacing h (half the
-// fluid spacing) gives each voxel's porosity, its fluid volume fraction 1 - fill (the paper
-// uses 0/1 voxels; fractions make the embedded volume match the body's, docs/method.md
-// "Reference lattice"); a fluid node mapped into the shape frame gets the average of that
-// porosity over the mapped point and its q - 1 = 18 D3Q19 neighbours at spacing h.
+// particle in the fluid"): the shape's reference lattice gives each voxel's porosity, its fluid
+// volume fraction 1 - fill (the paper uses 0/1 voxels; fractions make the embedded volume match
+// the body's, docs/method.md "Reference lattice"); a fluid node mapped into the shape frame gets
+// the average of that porosity over the mapped point and its q - 1 = 18 D3Q19 neighbours at the
+// stencil spacing h = dx / 2. The stencil spans `step` voxels (the scenes' lattice has voxels
+// of h / 2, each holding the solid fraction of a box of side h about it, so that no stencil
+// point moves by more than h / 4 to the voxel it reads: docs/method.md, "Reference lattice").
 //
 // Two lookups (scene key fluid.porosity_lookup, docs/performance.md compares them):
 // * trilinear interpolation of the reference lattice: the porosity of a node, and with it the
 //   penalization and the set of boundary links, changes continuously when the body moves or
 //   turns by a fraction of a reference cell. Because the 19-point average and trilinear
-//   interpolation are both linear and the stencil offsets are whole reference cells, the two
+//   interpolation are both linear and the stencil offsets are whole voxels (step of them), the two
 //   commute exactly: we average once on the reference lattice at construction and a lookup
 //   is one trilinear interpolation (8 loads) instead of 19 of them.
 // * nearest voxel (the paper's construction): each of the 19 D3Q19 stencil points x + h c_i
@@ -52,20 +54,21 @@ namespace lbdem::hlbm {
 inline constexpr double kTieTolerance = 1e-9;
 inline constexpr double kNearestHalf = 0.5 + kTieTolerance;
 
-// The nearest lookup's 19 stencil offsets R^T c_i (reference-lattice units) as it reads them:
-// one array per axis, padded to 20 with a zero offset, so the mapping of all points vectorizes.
+// The nearest lookup's 19 stencil offsets s R^T c_i (reference-lattice units, s the stencil's
+// step in voxels) as it reads them: one array per axis, padded to 20 with a zero offset, so the
+// mapping of all points vectorizes.
 struct NearestStencil {
   static constexpr int kPoints = 19, kPadded = 20;
   alignas(32) std::array<double, kPadded> x{}, y{}, z{};
-  // Per axis, the largest |offset| plus 1e-9 voxels (far above the round-off of a mapped point,
-  // below 1.5 since |R^T c_i| <= sqrt 2): what the batched lookup's 4-voxel boxes rest on.
-  std::array<double, 3> extent{1.5, 1.5, 1.5};
+  // Per axis, the largest |offset| plus 1e-9 voxels (far above the round-off of a mapped point;
+  // at most s sqrt 2 + 1e-9 since |R^T c_i| <= sqrt 2): what the batched lookup's boxes rest on.
+  std::array<double, 3> extent{0, 0, 0};
   void set_extent();
 };
 
 // Nodes for a batched lookup: `count` nodes with their reference-lattice coordinates, one array
 // per axis (the caller fills them), their porosity, and the `mixed_count` nodes whose porosity
-// may lie strictly between 0 and 1 (ReferencePorosity::nearest: those whose 4^3 box is mixed), in
+// may lie strictly between 0 and 1 (ReferencePorosity::nearest: those whose box is mixed), in
 // batch order. The arrays only grow, so that refilling a batch clears no memory.
 struct NearestBatch {
   std::size_t count = 0, mixed_count = 0;
@@ -87,21 +90,23 @@ struct NearestBatch {
 
 class ReferencePorosity {
  public:
-  explicit ReferencePorosity(const Voxels& voxels);
+  // step: the stencil spacing h = dx / 2 in voxels (1 or more; BodyField takes it from dx).
+  ReferencePorosity(const Voxels& voxels, int step);
 
   // Porosity at a point given in reference-lattice coordinates (see to_reference): 1 off the
   // lattice, 0 deep inside. Exactly 0 or 1 where all 8 interpolation corners are.
   double at(const Eigen::Vector3d& ref) const;
   // The paper's lookup: the fraction of the 19 points ref + stencil[i] whose nearest voxel is
   // fluid; stencil[i] is the lattice-frame offset h c_i in reference-lattice coordinates
-  // (R^T c_i). Exactly 0 or 1 when all 19 agree.
+  // (step R^T c_i). Exactly 0 or 1 when all 19 agree.
   double nearest(const Eigen::Vector3d& ref, const NearestStencil& stencil) const;
   // The same for every node of a batch (sets batch.d), bit for bit what the single-node lookup
-  // gives: the nodes whose 4^3 box is mixed read their points several nodes at a time.
+  // gives: the nodes whose box is mixed read their points several nodes at a time.
   void nearest(NearestBatch& batch, const NearestStencil& stencil) const;
 
   // Reference-lattice coordinates of a shape-frame point p (m): ref = p / h + shift().
   double spacing() const { return h_; }
+  int step() const { return step_; }
   const Eigen::Vector3d& shift() const { return shift_; }
 
   // Largest distance of a point with porosity < 1 from the shape-frame origin (m).
@@ -110,39 +115,44 @@ class ReferencePorosity {
   double surface_radius() const { return surface_radius_; }
 
  private:
-  static constexpr int kPad = 2;  // one layer for the 19-point stencil, one for trilinear
   // Whether a box of voxels is all fluid, all solid, or mixed.
   enum class Block : std::uint8_t { mixed, fluid, solid };
   double h_ = 0;
+  int step_ = 1;
+  // Padding layers of fluid voxels: step for the 19-point stencil and one for trilinear.
+  int pad_ = 2;
   Eigen::Vector3d shift_ = Eigen::Vector3d::Zero();
   std::array<int, 3> m_{0, 0, 0};  // padded extents
   std::vector<float> smooth_;      // averaged porosity, padded lattice, x fastest
-  // Fluid fraction of each voxel (1 - fill) on the padded lattice grown by kPointPad more fluid
-  // layers: every stencil point of a node whose nearest voxel is on the padded lattice reads
-  // it without a range check (components of R^T c_i are below 2 voxels). fluid_origin_ is the
-  // index of padded voxel (0, 0, 0), stride_ the steps in y and z.
-  static constexpr int kPointPad = 2;
+  // Fluid fraction of each voxel (1 - fill) on the padded lattice grown by point_pad_ =
+  // ceil(step sqrt 2) more fluid layers: every stencil point of a node whose nearest voxel is on
+  // the padded lattice reads it without a range check (components of step R^T c_i are at most
+  // step sqrt 2). fluid_origin_ is the index of padded voxel (0, 0, 0), stride_ the steps in y, z.
+  int point_pad_ = 2;
   std::vector<float> fluid_;
   std::ptrdiff_t fluid_origin_ = 0;
   std::array<std::ptrdiff_t, 2> stride_{0, 0};
-  // Per voxel l (-2 <= l_a < m_a, stored at l + 2): the class of the 4^3 voxels l .. l + 3 (beyond
-  // the padded lattice: fluid). A node at x = ref + kNearestHalf reads, per axis, voxels between
-  // floor(x - e) and floor(x + e) (e: the stencil's extent), at most 4 of them since 2 e < 3.
-  std::vector<Block> box4_;
-  std::array<std::size_t, 2> box4_stride_{0, 0};
+  // Per voxel l (-point_pad_ <= l_a < m_a, stored at l + point_pad_): the class of the box_^3
+  // voxels l .. l + box_ - 1 (beyond the padded lattice: fluid), box_ = ceil(2 step sqrt 2) + 1
+  // (4 at step 1, 7 at step 2). A node at x = ref + kNearestHalf reads, per axis, voxels between
+  // floor(x - e) and floor(x + e) (e: the stencil's extent), at most box_ of them since
+  // 2 e <= box_ - 1.
+  int box_ = 4;
+  std::vector<Block> blocks_;
+  std::array<std::size_t, 2> block_stride_{0, 0};
   double support_radius_ = 0;
   double surface_radius_ = 0;
 
-  // Class of the 4^3 box a node's points can reach, the node at x, y, z (reference coordinates,
+  // Class of the box a node's points can reach, the node at x, y, z (reference coordinates,
   // kNearestHalf added); a node off the padded lattice is fluid (its points reach at most its
-  // two fluid layers).
+  // point_pad_ fluid layers).
   Block box_at(double x, double y, double z, const NearestStencil& stencil) const {
     if (!(x >= 0 && y >= 0 && z >= 0 && x < m_[0] && y < m_[1] && z < m_[2])) return Block::fluid;
-    // On the padded lattice the box origins are >= -2.
-    const auto i = static_cast<std::size_t>(std::floor(x - stencil.extent[0]) + 2);
-    const auto j = static_cast<std::size_t>(std::floor(y - stencil.extent[1]) + 2);
-    const auto l = static_cast<std::size_t>(std::floor(z - stencil.extent[2]) + 2);
-    return box4_[i + box4_stride_[0] * j + box4_stride_[1] * l];
+    // On the padded lattice the box origins are >= -point_pad_.
+    const auto i = static_cast<std::size_t>(std::floor(x - stencil.extent[0]) + point_pad_);
+    const auto j = static_cast<std::size_t>(std::floor(y - stencil.extent[1]) + point_pad_);
+    const auto l = static_cast<std::size_t>(std::floor(z - stencil.extent[2]) + point_pad_);
+    return blocks_[i + block_stride_[0] * j + block_stride_[1] * l];
   }
   // The nearest lookup's 19 loads for a node of a mixed box, out of line so that the
   // shortcut inlines into the update loops.
@@ -183,7 +193,7 @@ inline double ReferencePorosity::at(const Eigen::Vector3d& ref) const {
   return detail::lerp(detail::lerp(c00, c10, ty), detail::lerp(c01, c11, ty), tz);
 }
 
-// A node's 19 points read voxels within its 4^3 box (box4_): where that box is uniform they all
+// A node's 19 points read voxels within its box (blocks_): where that box is uniform they all
 // read the same value and the sum below is exactly 0 or 19. Cells beyond the band (most of the
 // update's candidates) cost one load instead of 19; the result is the 19-point sum's bit for bit.
 inline double ReferencePorosity::nearest(const Eigen::Vector3d& ref,

@@ -3,6 +3,7 @@
 // the reference lattice; STL round trips against analytic shapes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -100,6 +101,30 @@ TEST(Voxelize, LatticeAlignedCuboidIsExact) {
   for (int d = 0; d < 3; ++d) EXPECT_NEAR(m.inertia(d, d), I[d], 1e-12 * I[d]);
   EXPECT_NEAR(m.inertia(0, 1), 0.0, 1e-15);
   EXPECT_LT(m.centroid.norm(), 1e-14);
+}
+
+// The fluid's reference lattice (box_averaged): each voxel holds the solid fraction of the cube
+// of side 2 h about its centre, taking each voxel's fill as spread evenly over it. For a box
+// whose faces lie on voxel faces (fills 0 or 1) that is exact: a product of per-axis overlaps.
+// Any solid keeps its total volume.
+TEST(Voxelize, BoxAveragedFillIsTheFractionOfABoxTwiceTheSpacing) {
+  const double h = 1.0 / 20;
+  const Voxels v = box_averaged(voxelize(SolidGeometry::cuboid({1, 1, 1}), h));
+  auto overlap = [&](double c) {  // of [c - h, c + h] with [-1/2, 1/2], over 2 h
+    return std::max(0.0, std::min(c + h, 0.5) - std::max(c - h, -0.5)) / (2 * h);
+  };
+  double worst = 0;
+  for (int k = 0; k < v.n[2]; ++k)
+    for (int j = 0; j < v.n[1]; ++j)
+      for (int i = 0; i < v.n[0]; ++i) {
+        const Eigen::Vector3d c = v.center(i, j, k);
+        const double exact = overlap(c.x()) * overlap(c.y()) * overlap(c.z());
+        worst = std::max(worst, std::abs(v.fill[v.index(i, j, k)] - exact));
+      }
+  EXPECT_LT(worst, 1e-7);
+  const Voxels s = box_averaged(voxelize(SolidGeometry::sphere(0.5), 1.0 / 19.4));
+  EXPECT_NEAR(mass_properties(s).volume,
+              mass_properties(voxelize(SolidGeometry::sphere(0.5), 1.0 / 19.4)).volume, 1e-6);
 }
 
 TEST(Voxelize, KeepsEmptyLayersAroundTheSolid) {

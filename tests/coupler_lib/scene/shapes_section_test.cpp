@@ -126,7 +126,11 @@ shapes:
   EXPECT_NEAR(a.mass.inertia(0, 0), 8e-9 * 4e-6 / 6, 1e-26);  // V a^2 / 6
   // Shape frame: the voxels' own centroid is the origin.
   EXPECT_LT(mass_properties(a.voxels).centroid.norm(), 1e-15);
-  EXPECT_NEAR(a.bounding_radius, std::sqrt(3.0) * 1e-3, 1e-15);
+  // The reference lattice (voxels of h / 2 holding the fill of a box h) reaches one voxel of
+  // h / 2 beyond the faces.
+  EXPECT_DOUBLE_EQ(a.voxels.h, h / 2);
+  EXPECT_DOUBLE_EQ(a.voxel_spacing, h);
+  EXPECT_NEAR(a.bounding_radius, std::sqrt(3.0) * (1e-3 + h / 2), 1e-15);
   EXPECT_EQ(a.clump.size(), 489u);
   std::printf("cube_489 at 24 voxels across: volume error %.4f, deviation %.3g m\n",
               a.clump_quality.volume_error, a.clump_quality.max_deviation);
