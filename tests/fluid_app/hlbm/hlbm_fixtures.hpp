@@ -10,6 +10,7 @@
 
 #include "coupler_lib/coupling/packets.hpp"
 #include "coupler_lib/geometry/shape.hpp"
+#include "coupler_lib/geometry/voxelize.hpp"
 #include "fluid_app/hlbm/body_field.hpp"
 #include "fluid_app/hlbm/momentum_exchange.hpp"
 #include "fluid_app/hlbm/penalty_loads.hpp"
@@ -34,11 +35,20 @@ inline Voxels voxelize(double h, int n, const std::function<bool(const Eigen::Ve
   return v;
 }
 
+// The fluid's reference lattice as the scenes build it (coupler_lib/geometry/shape.hpp): the
+// stencil spacing h given, voxels of h / 2 holding the fill of a box h (box_averaged), so the
+// lookup's stencil spans two voxels per c_i. (Voxels of h, a stencil of one voxel, are what
+// these fixtures built before; BodyField takes either.)
+inline Voxels reference_lattice(double h, int n,
+                                const std::function<bool(const Eigen::Vector3d&)>& in) {
+  return box_averaged(voxelize(h / 2, 2 * n, in));
+}
+
 inline Shape sphere(double radius, double h) {
   Shape s;
   s.name = "sphere";
   const int n = 2 * static_cast<int>(std::ceil(radius / h)) + 4;
-  s.voxels = voxelize(h, n, [&](const Eigen::Vector3d& p) { return p.norm() < radius; });
+  s.voxels = reference_lattice(h, n, [&](const Eigen::Vector3d& p) { return p.norm() < radius; });
   s.bounding_radius = radius;
   return s;
 }
@@ -47,8 +57,8 @@ inline Shape cube(double edge, double h) {
   Shape s;
   s.name = "cube";
   const int n = 2 * static_cast<int>(std::ceil(edge / (2 * h))) + 4;
-  s.voxels =
-      voxelize(h, n, [&](const Eigen::Vector3d& p) { return p.cwiseAbs().maxCoeff() < edge / 2; });
+  s.voxels = reference_lattice(
+      h, n, [&](const Eigen::Vector3d& p) { return p.cwiseAbs().maxCoeff() < edge / 2; });
   s.bounding_radius = edge * std::sqrt(3.0) / 2;
   return s;
 }
