@@ -4,14 +4,14 @@
 // volume fraction 1 - fill (the paper uses 0/1 voxels; fractions make the embedded volume match
 // the body's, docs/method.md "Reference lattice"); a fluid node mapped into the shape frame gets
 // the average of that porosity over the mapped point and its q - 1 = 18 D3Q19 neighbours at the
-// stencil spacing h = dx / 2. The stencil spans `step` voxels (the scenes' lattice has voxels
+// stencil spacing h = dx / 2, `step` voxels per offset c_i (the scenes' lattice has voxels
 // of h / 2, each holding the solid fraction of a box of side h about it, so that no stencil
 // point moves by more than h / 4 to the voxel it reads: docs/method.md, "Reference lattice").
 //
 // Two lookups (scene key fluid.porosity_lookup, docs/performance.md compares them):
 // * trilinear interpolation of the reference lattice: the porosity of a node, and with it the
 //   penalization and the set of boundary links, changes continuously when the body moves or
-//   turns by a fraction of a reference cell. Because the 19-point average and trilinear
+//   turns by a fraction of a voxel. Because the 19-point average and trilinear
 //   interpolation are both linear and the stencil offsets are whole voxels (step of them), the two
 //   commute exactly: we average once on the reference lattice at construction and a lookup
 //   is one trilinear interpolation (8 loads) instead of 19 of them.
