@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 #include "coupler_lib/geometry/voxelize.hpp"
 #include "tests/fluid_app/hlbm/hlbm_fixtures.hpp"
@@ -260,6 +262,29 @@ TEST(Porosity, NoSolidCellNeighboursPureFluid) {
 // The nearest lookup takes its stencil in the lattice frame, which keeps the same property.
 TEST(Porosity, NoSolidCellNeighboursPureFluidWithNearestLookup) {
   EXPECT_EQ(interior_fluid_links(PorosityLookup::nearest), 0);
+}
+
+// The stencil spacing dx / 2 must be a whole number of voxels (two with the scenes' lattice of
+// dx / 4, one with voxels of dx / 2); anything else is refused at construction, naming the shape.
+TEST(Porosity, StencilSpacingMustBeWholeVoxels) {
+  const Subdomain sub = test::whole(16);
+  for (double h : {0.5, 0.25}) {
+    Shape s = test::sphere(3, 0.5);
+    s.voxels.h = h;
+    s.voxels.origin *= h / 0.25;
+    PorousField<double> field;
+    EXPECT_NO_THROW(BodyField<double>({&s, 1}, sub, test::unit_frame(), field)) << h;
+  }
+  Shape s = test::sphere(3, 0.5);
+  s.voxels.h = 0.3;
+  PorousField<double> field;
+  try {
+    BodyField<double> bodies({&s, 1}, sub, test::unit_frame(), field);
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("shape 'sphere'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("whole number"), std::string::npos) << e.what();
+  }
 }
 
 // Nearest voxel (the paper's lookup): the embedded volume converges like the trilinear one's
