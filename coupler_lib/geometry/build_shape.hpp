@@ -1,8 +1,9 @@
 #pragma once
 // One call from scene parameters to everything a side needs about a shape: the exact mass
-// properties, the reference voxelization in the shape frame (with the volume it embeds), the
-// contact clump and its quality, and the bounding radius. Both binaries call this with the same
-// spacing and get identical numbers. With hydrodynamic_scale != 1 or hydrodynamic_offset != 0,
+// properties, the fluid's reference lattice in the shape frame (voxels of half the given
+// spacing holding box fills, shape.hpp; with the volume it embeds), the contact clump and its
+// quality, and the bounding radius. Both binaries call this with the same spacing and get
+// identical numbers. With hydrodynamic_scale != 1 or hydrodynamic_offset != 0,
 // `voxels`, `reference_volume` and `bounding_radius` are those of the scaled and offset shape
 // (what the fluid sees: the scaled shape centred on its centroid, then its surface moved along
 // its normal by the offset); mass properties and the clump stay the true shape's.
