@@ -173,6 +173,19 @@ double SolidGeometry::distance_to_surface(const Eigen::Vector3d& x) const {
   return 0;
 }
 
+std::array<double, 2> SolidGeometry::distance_bounds(const Eigen::Vector3d& x) const {
+  if (kind_ != Kind::ellipsoid) {
+    const double d = distance_to_surface(x);
+    return {d, d};
+  }
+  const double s = x.cwiseQuotient(p_).norm();
+  if (!(s > 0)) {
+    const double d = distance_to_surface(x);
+    return {d, d};
+  }
+  return {std::abs(1 - s) * p_.minCoeff(), x.norm() * std::abs(1 / s - 1)};
+}
+
 double SolidGeometry::exact_volume() const {
   switch (kind_) {
     case Kind::sphere:

@@ -4,6 +4,7 @@
 // exact distance to the surface and the bounds; voxelize() turns it into Voxels.
 #include <Eigen/Dense>
 
+#include <array>
 #include <memory>
 #include <string>
 
@@ -28,6 +29,12 @@ class SolidGeometry {
   bool inside(const Eigen::Vector3d& x) const;
   // Unsigned Euclidean distance from x to the surface.
   double distance_to_surface(const Eigen::Vector3d& x) const;
+  // Bounds lo <= distance_to_surface(x) <= hi without the exact distance where that is costly
+  // (the ellipsoid's is an iterative root): x on the surface of the ellipsoid scaled by s about
+  // its centre lies at least |1 - s| a_min from the surface (the support functions of the two
+  // differ by |1 - s| h(u) >= |1 - s| a_min) and at most |x - x / s| (x / s is on it). The other
+  // kinds give lo = hi = the exact distance.
+  std::array<double, 2> distance_bounds(const Eigen::Vector3d& x) const;
   Eigen::Vector3d lower() const { return lo_; }
   Eigen::Vector3d upper() const { return hi_; }
   // Exact volume when known in closed form (analytic kinds and meshes), m^3.

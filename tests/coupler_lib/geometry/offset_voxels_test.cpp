@@ -11,6 +11,7 @@
 #include "coupler_lib/geometry/mesh_check.hpp"
 #include "coupler_lib/geometry/mesh_primitives.hpp"
 #include "coupler_lib/geometry/offset_voxels.hpp"
+#include "coupler_lib/geometry/voxel_fill.hpp"
 #include "coupler_lib/geometry/voxelize.hpp"
 
 namespace lbdem {
@@ -62,6 +63,34 @@ TEST(OffsetVoxels, ErodedAndDilatedEllipsoidHaveTheParallelBodysVolume) {
     const double semi_axes = 4.0 / 3.0 * kPi * (a - e) * (b - e) * (c - e);
     EXPECT_NEAR(got / exact, 1, 5e-4) << "offset " << e;
     EXPECT_GT(std::abs(semi_axes / exact - 1), 3e-3) << "offset " << e;
+  }
+}
+
+// The analytic path decides from cheap distance bounds where they settle it
+// (SolidGeometry::distance_bounds): its voxels must be those the exact distance at every point
+// gives, bit for bit, eroded and dilated, on an ellipsoid whose bounds are loose.
+TEST(OffsetVoxels, DistanceBoundsGiveTheExactDistancesVoxels) {
+  const SolidGeometry ell = SolidGeometry::ellipsoid({12, 8, 6});
+  for (const double e : {0.7, -0.5}) {
+    const Voxels got = voxelize_offset(ell, e, 1.0);
+    const auto inside = [&](const Eigen::Vector3d& x) {
+      return e > 0 ? ell.inside(x) && ell.distance_to_surface(x) >= e
+                   : ell.inside(x) || ell.distance_to_surface(x) <= -e;
+    };
+    const auto bound = [&](const Eigen::Vector3d& x) {
+      const double d = ell.distance_to_surface(x);
+      return std::abs((ell.inside(x) ? d : -d) - e);
+    };
+    Voxels ref = empty_lattice(ell.lower() + Eigen::Vector3d::Constant(e),
+                               ell.upper() - Eigen::Vector3d::Constant(e), 1.0, 2);
+    for (int k = 0; k < ref.n[2]; ++k)
+      for (int j = 0; j < ref.n[1]; ++j)
+        for (int i = 0; i < ref.n[0]; ++i)
+          ref.solid[ref.index(i, j, k)] = inside(ref.center(i, j, k)) ? 1 : 0;
+    fill_sampled(inside, bound, ref);
+    ASSERT_EQ(got.n, ref.n) << "offset " << e;
+    EXPECT_EQ(got.solid, ref.solid) << "offset " << e;
+    EXPECT_EQ(got.fill, ref.fill) << "offset " << e;
   }
 }
 
