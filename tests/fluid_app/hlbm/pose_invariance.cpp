@@ -309,8 +309,8 @@ Case sphere_in_array(Load load, int n, double phi, double tau) {
 
 // Dilute array, d = 11.5 cells (phi 0.1, tau 1): centred between nodes its 28 voxels put every
 // stencil point on a voxel face, and before the tie tolerance the round-off split the ties
-// (K -19.5 % there). Measured (docs/validation.md section 7): mean -1.76 %, spread 1.41 %;
-// tolerance 3 % (1.7x).
+// (K -19.5 % there). Measured (docs/validation.md section 7): mean -1.67 %, spread 0.60 %;
+// tolerance 3 % (1.8x).
 TEST(PoseInvariance, SphereDragDiluteD12Tau1) {
   Case c = sphere_in_array(Load::drag, 20, 0.1, 1.0);
   c.tolerance = 0.03;
@@ -337,9 +337,9 @@ TEST(PoseInvariance, SphereDragDenseD28Phi0343) {
 
 // Dense arrays at few cells per gap, where the mean is a resolution error and the spread is what
 // is asserted (the reference 0: K printed, not judged). phi 0.3 with d = 11.6 cells (2.4-cell
-// gaps): K 10.869, -10.2 % against Sangani & Acrivos (12.099), spread 1.15 % (3.28 % with voxels
-// of dx/2). phi 0.45 with d = 30.4 cells (1.6-cell gaps): K 27.149, -9.6 % against their series'
-// 30.03 (which the reference data call unreliable near close packing), spread 0.43 % (1.62 %).
+// gaps): K 10.869, -10.2 % against Sangani & Acrivos (12.099), spread 1.15 %. phi 0.45 with
+// d = 30.4 cells (1.6-cell gaps): K 27.149, -9.6 % against their series' 30.03 (which the
+// reference data call unreliable near close packing), spread 0.43 %.
 TEST(PoseInvariance, SphereDragDensePhi03D12) {
   Case c = sphere_in_array(Load::drag, 14, 0.3, 0.8);
   c.reference = 0;
@@ -393,11 +393,11 @@ TEST(PoseInvariance, DISABLED_CalibratedR3Tau1) {
 }
 
 // Spinning sphere (the torque path), d = 8 cells in a box of 4 d as coupled_sphere_spin:
-// T against Stokes' 8 pi mu a^3 Omega, tolerance 5 % (that test's). With voxels of dx/2 the
-// spread was 2.94 % (unrotated poses +0.20 %, rotated +1.65 to +3.19 %): each stencil point
-// moved by up to dx/4 to its voxel's centre, all by the same amount when the body is not turned.
-// The reference lattice of dx/4 holding box fills (shape.hpp) bounds that move by dx/8
-// (docs/validation.md section 7).
+// T against Stokes' 8 pi mu a^3 Omega, tolerance 5 % (that test's). The case that chose the
+// reference lattice (shape.hpp): with voxels of dx/2 each stencil point moves by up to dx/4 to
+// its voxel's centre, all by the same amount when the body is not turned, and the spread is
+// 2.94 %; voxels of dx/4 holding box fills bound the move by dx/8 (docs/validation.md
+// section 7).
 TEST(PoseInvariance, SphereSpinD8) {
   Case c = sphere_in_array(Load::spin, 32, 0.0082, 0.8);
   c.size = 8;
@@ -410,8 +410,8 @@ TEST(PoseInvariance, SphereSpinD8) {
 // of cubes, so the spread alone is asserted. The box is five edges wide because at three (box
 // 24) the array's images make K depend on how the cube is turned by about 2 % (the same 12
 // rotated poses spread 2.0 % there and 0.45 % here; docs/validation.md section 7), which is the
-// array's physics, not the lattice's. With voxels of dx/2 the spread was 2.65 %: unrotated, K
-// moved with where the faces fell between node planes, 1.622 (centred on a node) to 1.664.
+// array's physics, not the lattice's. With voxels of dx/2 instead of the reference lattice's
+// dx/4 the spread is 2.65 %: unrotated, K moves with where the faces fall between node planes.
 TEST(PoseInvariance, CubeDragDiluteD8) {
   Case c;
   c.kind = "cube";
