@@ -5,6 +5,7 @@
 Runs start in the scene's folder; Open MPI is allowed to run as root and to oversubscribe (the
 shared development machine has 2 cores).
 """
+import hashlib
 import os
 import shutil
 import subprocess
@@ -23,6 +24,18 @@ def environment(extra=None):
     env.update({"OMPI_ALLOW_RUN_AS_ROOT": "1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM": "1"})
     env.update(extra or {})
     return env
+
+
+def build_id(build):
+    """Digest of a build's two programs. Tools that resume (the study, the work-precision
+    ladders) reuse a finished run only from the binaries that made it, so a rebuilt method never
+    passes off an older method's results as its own."""
+    h = hashlib.sha256()
+    for exe in ("fluid_app", "dem_app"):
+        with open(os.path.join(build, exe, exe), "rb") as f:
+            for block in iter(lambda: f.read(1 << 20), b""):
+                h.update(block)
+    return h.hexdigest()[:12]
 
 
 def coupled_command(build, scene, fluid_ranks=1, dem_ranks=1):

@@ -2,8 +2,9 @@
 packing, one single-body run per shape (its terminal velocity u_T at the same resolution and tau),
 one triply periodic run per (shape, phi), the analysis of each and the summary table and plots.
 
-Resumable: a run whose folder holds result.json for the same scene is skipped; a folder without
-it (an interrupted run) is emptied and the run starts again from t = 0.
+Resumable: a run whose folder holds result.json for the same scene and the same build (a digest
+of the two programs) is skipped; a folder without it (an interrupted run) is emptied and the run
+starts again from t = 0.
 """
 import json
 import math
@@ -219,15 +220,17 @@ class Study:
         folder = os.path.join(self.out, name)
         text = yaml.safe_dump(scene, sort_keys=False)
         result_file = os.path.join(folder, "result.json")
+        build = run.build_id(self.build)
         if os.path.exists(result_file):
-            with open(os.path.join(folder, "scene.yaml")) as f:
-                if f.read() == text:
-                    with open(result_file) as g:
-                        res = json.load(g)
-                    self.log(f"study: [{index}/{total}] {name}: done earlier "
-                             f"({res['wall_s']:.0f} s), skipped")
-                    return res
-            self.log(f"study: [{index}/{total}] {name}: the scene changed, running it again")
+            with open(os.path.join(folder, "scene.yaml")) as f, open(result_file) as g:
+                same_scene, res = f.read() == text, json.load(g)
+            if same_scene and res.get("build") == build:
+                self.log(f"study: [{index}/{total}] {name}: done earlier "
+                         f"({res['wall_s']:.0f} s), skipped")
+                return res
+            why = ("the scene changed" if not same_scene else
+                   f"the programs changed (build {res.get('build', 'unrecorded')}, now {build})")
+            self.log(f"study: [{index}/{total}] {name}: {why}, running it again")
         elif os.path.isdir(folder):
             self.log(f"study: [{index}/{total}] {name}: unfinished earlier, restarting from t = 0")
         if os.path.isdir(folder):
@@ -250,7 +253,7 @@ class Study:
         wall, _ = run.run(self.build, path, ranks[0], ranks[1], timeout=None,
                           log=os.path.join(folder, "run.log"))
         res = {"name": name, "wall_s": wall, "cells": cells, "steps": steps,
-               "cell_updates_per_s": work / wall, "ranks": ranks}
+               "cell_updates_per_s": work / wall, "ranks": ranks, "build": build}
         self.finished.append((steps, float(np.prod(cells)), n_bodies, wall))
         with open(result_file, "w") as f:
             json.dump(res, f, indent=1)

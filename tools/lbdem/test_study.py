@@ -1,5 +1,6 @@
 """The sweep driver's bookkeeping: finished runs are skipped, interrupted ones restart cleanly,
-a changed scene runs again; the cost estimate; the momentum check (ctest tools_lbdem_py)."""
+a changed scene or a rebuilt program runs again; the cost estimate; the momentum check (ctest
+tools_lbdem_py)."""
 import os
 import tempfile
 import unittest
@@ -26,7 +27,9 @@ class Sweep(unittest.TestCase):
             def fake_run(build, path, *args, **kw):
                 calls.append(path)
                 return 2.0, ""
-            with mock.patch.object(study.run, "run", fake_run):
+            build = ["b1"]
+            with mock.patch.object(study.run, "run", fake_run), \
+                    mock.patch.object(study.run, "build_id", lambda _: build[0]):
                 s.launch("a", scene, cells)
                 self.assertEqual(len(calls), 1)
                 s.launch("a", scene, cells)  # finished: skipped
@@ -40,6 +43,11 @@ class Sweep(unittest.TestCase):
                 scene["time"]["end"] = 0.02  # changed scene: runs again
                 s.launch("a", scene, cells)
                 self.assertEqual(len(calls), 3)
+                s.launch("a", scene, cells)  # same scene, same build: skipped
+                self.assertEqual(len(calls), 3)
+                build[0] = "b2"  # rebuilt programs: runs again
+                s.launch("a", scene, cells)
+                self.assertEqual(len(calls), 4)
 
     def test_precision_reaches_every_generated_scene_only_when_chosen(self):
         def study_with(fluid):
