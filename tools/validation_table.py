@@ -29,6 +29,7 @@ import re
 import shlex
 import subprocess
 import sys
+import tempfile
 
 HEADER = re.compile(r"^\d+/\d+ Test: (.+?)\s*$", re.M)
 STATUS = re.compile(r"^Test (Passed|Failed|Skipped|Not Run)", re.M)
@@ -144,9 +145,15 @@ def kind_of(test, entries):
 
 
 def validation_tests(build):
-    """Names of the tests labelled `validation` in a build (ctest --show-only=json-v1)."""
-    out = subprocess.run(["ctest", "-L", "validation", "--show-only=json-v1"], cwd=build,
-                         capture_output=True, text=True, check=True).stdout
+    """Names of the tests labelled `validation` in a build (ctest --show-only=json-v1). ctest
+    rewrites Testing/Temporary/LastTest.log of the folder it runs in, even when it only lists:
+    run in the build, it would wipe the log this table is read from (and, as a ctest test, the
+    log of the run it belongs to). So it runs in a scratch folder that points at the build."""
+    with tempfile.TemporaryDirectory(prefix="lbdem_ctest_list_") as scratch:
+        with open(os.path.join(scratch, "CTestTestfile.cmake"), "w") as f:
+            f.write(f'subdirs("{os.path.abspath(build)}")\n')
+        out = subprocess.run(["ctest", "-L", "validation", "--show-only=json-v1"], cwd=scratch,
+                             capture_output=True, text=True, check=True).stdout
     tests = []
     for t in json.loads(out)["tests"]:
         labels = [v for p in t.get("properties", []) if p["name"] == "LABELS" for v in p["value"]]
