@@ -156,14 +156,15 @@ Voxels offset_analytic(const SolidGeometry& s, double offset, Voxels v) {
   };
   // |signed distance - offset|, compared by fill_sampled with half a voxel diagonal: where the
   // bounds put the signed distance's whole interval that far from the offset, its gap is
-  // returned (a lower bound, so the same decision), else the exact value.
+  // returned (a lower bound, so the same decision), else the exact value. Kinds whose bounds
+  // are the exact distance (lo = hi) return it at once: their gap is that value.
   const double near = 0.5 * std::sqrt(3.0) * v.h;
   const auto bound = [&](const Eigen::Vector3d& x) {
     const bool in = s.inside(x);
     const auto [lo, hi] = s.distance_bounds(x);
     const double a = in ? lo : -hi, b = in ? hi : -lo;  // the signed distance's interval
     const double gap = offset < a ? a - offset : offset > b ? offset - b : 0.0;
-    if (gap > near + margin) return gap;
+    if (lo == hi || gap > near + margin) return gap;
     const double d = s.distance_to_surface(x);
     return std::abs((in ? d : -d) - offset);
   };

@@ -37,8 +37,8 @@ inline Voxels voxelize(double h, int n, const std::function<bool(const Eigen::Ve
 
 // The fluid's reference lattice as the scenes build it (coupler_lib/geometry/shape.hpp): the
 // stencil spacing h given, voxels of h / 2 holding the fill of a box h (box_averaged), so the
-// lookup's stencil spans two voxels per c_i. (Voxels of h, a stencil of one voxel, are what
-// these fixtures built before; BodyField takes either.)
+// lookup's stencil spans two voxels per c_i. (BodyField also takes voxels of h, a stencil of
+// one voxel.)
 inline Voxels reference_lattice(double h, int n,
                                 const std::function<bool(const Eigen::Vector3d&)>& in) {
   return box_averaged(voxelize(h / 2, 2 * n, in));
